@@ -1,0 +1,45 @@
+#ifndef signorini_boundary_conditions_h
+#define signorini_boundary_conditions_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/fe/component_mask.h>
+
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * Loads and supports: subsection `Boundary conditions`.
+   *
+   * - `Dirichlet = 0: xy; 1: y` fixes the listed displacement components on
+   *   each boundary id (`all` for every component) to `Prescribed
+   *   displacement`.
+   * - `Traction` acts on the boundary ids in `Traction boundary ids`.
+   * - `Body force` acts in the whole body.
+   *
+   * Functions are muparser expressions of x, y[, z], one per component
+   * separated by ';', or one expression for all components.
+   */
+  template <int dim>
+  struct BoundaryConditions
+  {
+    std::vector<std::pair<dealii::types::boundary_id, dealii::ComponentMask>>
+                                                 dirichlet;
+    std::unique_ptr<dealii::FunctionParser<dim>> prescribed_displacement;
+    std::set<dealii::types::boundary_id>         traction_ids;
+    std::unique_ptr<dealii::FunctionParser<dim>> traction;
+    std::unique_ptr<dealii::FunctionParser<dim>> body_force;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace signorini
+
+#endif

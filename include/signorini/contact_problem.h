@@ -1,0 +1,177 @@
+#ifndef signorini_contact_problem_h
+#define signorini_contact_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <signorini/parameters.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * A vertex of the candidate contact boundary whose vertical displacement is
+   * free (not fixed by a Dirichlet condition or a hanging node).
+   */
+  template <int dim>
+  struct ContactNode
+  {
+    /** Displacement dofs; the last is the vertical (normal) one. */
+    std::array<dealii::types::global_dof_index, dim> dofs;
+    /** Initial gap to the obstacle [mm]. */
+    double gap;
+    /** Lumped contact-boundary mass, integral of the shape function over
+     * the contact boundary [mm^(dim-1)]; set on owned nodes only. */
+    double mass = 0.;
+    bool   owned;
+    /** In the active set (active set method), or penetrating (penalty). */
+    bool active = false;
+  };
+
+  /** The results of one cycle, one row of statistics.csv. */
+  template <int dim>
+  struct CycleStatistics
+  {
+    unsigned int                     cycle;
+    unsigned int                     cells;
+    dealii::types::global_dof_index  dofs;
+    unsigned int                     iterations;
+    unsigned int                     active_nodes;
+    dealii::Tensor<1, dim>           contact_force;
+    double                           max_penetration;
+    double                           estimated_error;
+    std::vector<dealii::Tensor<1, dim>> probes;
+  };
+
+  /**
+   * The Signorini problem: a linear elastic body, loads and supports, and a
+   * rigid obstacle, solved in adaptive cycles. The verbs are those of
+   * step-41/42: make_grid, setup_system, assemble_newton_system, solve,
+   * update_active_set, refine_grid, output_results, run. The class is split
+   * over source/contact_problem/ by concern.
+   */
+  template <int dim>
+  class ContactProblem
+  {
+  public:
+    /** @p parameter_text is the complete parameter set, written to
+     * parameters.prm. */
+    ContactProblem(const Parameters<dim> &parameters,
+                   const std::string     &parameter_text,
+                   const MPI_Comm         mpi_communicator);
+
+    /** All cycles; throws SolverFailure or InputError. */
+    void
+    run();
+
+    /** The statistics of the cycles finished so far. */
+    const std::vector<CycleStatistics<dim>> &
+    statistics() const;
+
+  private:
+    // setup.cc
+    void
+    make_grid();
+    void
+    setup_system();
+    void
+    setup_contact_nodes();
+
+    // assembly.cc
+    void
+    assemble_newton_system();
+    void
+    assemble_load();
+    void
+    assemble_residual();
+
+    // active_set.cc
+    void
+    initialize_active_set();
+    double
+    compute_contact_forces();
+    unsigned int
+    update_active_set();
+    std::pair<unsigned int, std::size_t>
+    active_set_signature() const;
+
+    // solve.cc
+    void
+    solve();
+    void
+    solve_contact_problem(const unsigned int cycle);
+
+    // refinement.cc
+    void
+    estimate_error();
+    void
+    refine_grid();
+
+    // output.cc
+    void
+    write_obstacle_and_parameters() const;
+    void
+    record_statistics(const unsigned int cycle);
+    void
+    output_results(const unsigned int cycle);
+
+    const Parameters<dim> &parameters;
+    const std::string      parameter_text;
+    MPI_Comm               mpi_communicator;
+    dealii::ConditionalOStream pcout;
+    dealii::TimerOutput        timer;
+
+    std::unique_ptr<dealii::Triangulation<dim>>      triangulation;
+    bool                                             simplex = false;
+    std::unique_ptr<dealii::FiniteElement<dim>>      fe;
+    const dealii::Mapping<dim>                      *mapping = nullptr;
+    dealii::Quadrature<dim>                          quadrature;
+    dealii::Quadrature<dim - 1>                      face_quadrature;
+    dealii::DoFHandler<dim>                          dof_handler;
+    dealii::IndexSet                                 locally_owned_dofs;
+    dealii::IndexSet                                 locally_relevant_dofs;
+    std::vector<std::vector<bool>>                   constant_modes;
+
+    /** Hanging nodes and Dirichlet data; fixed within a cycle. */
+    dealii::AffineConstraints<double> fixed_constraints;
+    /** fixed_constraints plus the active contact nodes at the obstacle. */
+    dealii::AffineConstraints<double> constraints;
+
+    dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    dealii::TrilinosWrappers::MPI::Vector  system_rhs;
+    /** Displacement [mm], with ghost entries. */
+    dealii::TrilinosWrappers::MPI::Vector solution;
+    /** K u - f with the contact set free: the obstacle's nodal force [N]. */
+    dealii::TrilinosWrappers::MPI::Vector residual;
+    /** External load vector f [N]. */
+    dealii::TrilinosWrappers::MPI::Vector load;
+    /** Contact pressure [MPa] at the vertical dofs of contact nodes, with
+     * ghost entries. */
+    dealii::TrilinosWrappers::MPI::Vector pressure;
+
+    std::vector<ContactNode<dim>> contact_nodes;
+    double                        complementarity_constant = 0.;
+    unsigned int                  newton_iterations        = 0;
+    dealii::Vector<float>         estimated_error_per_cell;
+
+    std::vector<CycleStatistics<dim>>         cycle_statistics;
+    std::vector<std::pair<double, std::string>> written_cycles;
+  };
+} // namespace signorini
+
+#endif

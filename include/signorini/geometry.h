@@ -1,0 +1,62 @@
+#ifndef signorini_geometry_h
+#define signorini_geometry_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria.h>
+
+#include <string>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * The body's shape: subsection `Geometry`. Three kinds of coarse mesh:
+   *
+   * - `rectangle` (a box in 3D) from `Lower left corner` to `Upper right
+   *   corner` with `Subdivisions` cells per direction; boundary ids 0/1 at
+   *   x = min/max, 2/3 at y = min/max, 4/5 at z = min/max. `Cell type =
+   *   simplex` splits every quadrilateral into 8 triangles (hexahedron into 24
+   *   tetrahedra), keeping the boundary ids.
+   * - `half ball` (a half-disk in 2D) of `Radius` around `Center`, flat face
+   *   on top (+y, or +z in 3D), curved face below: boundary id 0 on the curved
+   *   face, 1 on the flat one.
+   * - `gmsh`: a `.msh` file; physical groups give boundary ids. Triangles or
+   *   tetrahedra get P1 elements, quadrilaterals or hexahedra Q1.
+   */
+  template <int dim>
+  struct Geometry
+  {
+    enum class Type
+    {
+      rectangle,
+      half_ball,
+      gmsh
+    };
+
+    Type                      type = Type::rectangle;
+    dealii::Point<dim>        lower_left;
+    dealii::Point<dim>        upper_right;
+    std::vector<unsigned int> subdivisions;
+    bool                      simplex = false;
+    dealii::Point<dim>        center;
+    double                    radius = 1.;
+    /** Absolute path, resolved relative to the parameter file's folder. */
+    std::string  mesh_file;
+    unsigned int initial_refinement = 0;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** @p prm_directory resolves a relative `Mesh file`. */
+    void
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const std::string        &prm_directory);
+
+    /** Fills the empty serial @p coarse_mesh with the unrefined mesh. */
+    void
+    create_coarse_mesh(dealii::Triangulation<dim> &coarse_mesh) const;
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,51 @@
+#ifndef signorini_linear_solver_h
+#define signorini_linear_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * The linear solver used in every Newton step: subsection `Linear solver`.
+   * `direct` factorises with Trilinos Amesos (KLU); `amg cg` runs conjugate
+   * gradients preconditioned by Trilinos ML algebraic multigrid, with the
+   * translations as near-null space.
+   */
+  class LinearSolver
+  {
+  public:
+    enum class Type
+    {
+      direct,
+      amg_cg
+    };
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Solves @p matrix x = @p rhs. @p constant_modes are the translations
+     * (DoFTools::extract_constant_modes) for the AMG. Returns the number of
+     * iterations (1 for the direct solver); throws SolverFailure if the
+     * iteration does not converge.
+     */
+    unsigned int
+    solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+          dealii::TrilinosWrappers::MPI::Vector        &solution,
+          const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+          const std::vector<std::vector<bool>>         &constant_modes) const;
+
+    Type         type           = Type::direct;
+    double       tolerance      = 1e-12;
+    unsigned int max_iterations = 2000;
+  };
+} // namespace signorini
+
+#endif

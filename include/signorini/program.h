@@ -1,0 +1,17 @@
+#ifndef signorini_program_h
+#define signorini_program_h
+
+namespace signorini
+{
+  /**
+   * The `signorini` command: `signorini FILE.prm`, `signorini
+   * --print-parameters`, `signorini --help`. Reads the parameter file,
+   * dispatches on `Dimension` and runs all cycles. Every error is reported
+   * as one line on standard error; the return value is the exit status
+   * (see failures.h). MPI must be initialised by the caller.
+   */
+  int
+  run_program(int argc, char **argv);
+} // namespace signorini
+
+#endif

@@ -1,0 +1,136 @@
+#include <signorini/contact_problem.h>
+
+#include <cmath>
+#include <cstdint>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ContactProblem<dim>::initialize_active_set()
+  {
+    // From the previous cycle's displacement and pressure (zero on cycle 0),
+    // with the touching and penetrating nodes active from the start, so that
+    // a body held only by the obstacle is supported in the first solve.
+    const bool penalty =
+      parameters.contact.method == ContactParameters::Method::penalty;
+    for (auto &node : contact_nodes)
+      {
+        const auto   i = node.dofs[dim - 1];
+        const double s = solution(i) + node.gap;
+        node.active    = s <= 0 ||
+                      (!penalty && pressure(i) - complementarity_constant * s > 0);
+      }
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::compute_contact_forces()
+  {
+    TimerOutput::Scope t(timer, "Active set: contact forces");
+    assemble_residual();
+
+    // The residual K u - f at a free vertical contact dof is the obstacle's
+    // nodal force lambda_i; the pressure is lambda_i / m_i. The nonlinear
+    // residual combines the force balance at all other free dofs with the
+    // complementarity function of the method at the contact dofs.
+    const bool penalty =
+      parameters.contact.method == ContactParameters::Method::penalty;
+    const double epsilon = parameters.contact.penalty_parameter;
+
+    TrilinosWrappers::MPI::Vector owned_pressure(locally_owned_dofs,
+                                                 mpi_communicator);
+    TrilinosWrappers::MPI::Vector balance(residual);
+    double complementarity = 0., contact_force = 0.;
+    for (const auto &node : contact_nodes)
+      if (node.owned)
+        {
+          const auto   i      = node.dofs[dim - 1];
+          const double lambda = residual(i);
+          const double p      = node.mass > 0 ? lambda / node.mass : 0.;
+          const double s      = solution(i) + node.gap;
+          const double expected =
+            parameters.contact.method == ContactParameters::Method::none ?
+              lambda :
+            penalty ? node.mass * std::max(0., -s) / epsilon :
+                      node.mass *
+                        std::max(0., p - complementarity_constant * s);
+          owned_pressure(i) = p;
+          balance(i)        = 0.;
+          complementarity += (lambda - expected) * (lambda - expected);
+          contact_force += lambda * lambda;
+        }
+    owned_pressure.compress(VectorOperation::insert);
+    balance.compress(VectorOperation::insert);
+    pressure = owned_pressure;
+
+    const double balance_norm = balance.l2_norm();
+    complementarity = Utilities::MPI::sum(complementarity, mpi_communicator);
+    contact_force   = Utilities::MPI::sum(contact_force, mpi_communicator);
+    const double scale = load.l2_norm() + std::sqrt(contact_force);
+    return std::sqrt(balance_norm * balance_norm + complementarity) /
+           (scale > 0 ? scale : 1.);
+  }
+
+  template <int dim>
+  unsigned int
+  ContactProblem<dim>::update_active_set()
+  {
+    TimerOutput::Scope t(timer, "Active set: update");
+    const bool penalty =
+      parameters.contact.method == ContactParameters::Method::penalty;
+    unsigned int changes = 0;
+    for (auto &node : contact_nodes)
+      {
+        const auto   i = node.dofs[dim - 1];
+        const double s = solution(i) + node.gap;
+        const bool   active =
+          penalty ? s < 0 : pressure(i) - complementarity_constant * s > 0;
+        if (node.owned && active != node.active)
+          ++changes;
+        node.active = active;
+      }
+    return Utilities::MPI::sum(changes, mpi_communicator);
+  }
+
+  template <int dim>
+  std::pair<unsigned int, std::size_t>
+  ContactProblem<dim>::active_set_signature() const
+  {
+    unsigned int  count = 0;
+    std::uint64_t hash  = 0;
+    for (const auto &node : contact_nodes)
+      if (node.owned && node.active)
+        {
+          ++count;
+          std::uint64_t z = node.dofs[dim - 1] + 0x9e3779b97f4a7c15ULL;
+          z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+          z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+          hash += z ^ (z >> 31);
+        }
+    // Sums of per-process hashes: the same on every process.
+    return {Utilities::MPI::sum(count, mpi_communicator),
+            static_cast<std::size_t>(
+              Utilities::MPI::sum(static_cast<unsigned long>(hash),
+                                  mpi_communicator))};
+  }
+
+  template void
+  ContactProblem<2>::initialize_active_set();
+  template void
+  ContactProblem<3>::initialize_active_set();
+  template double
+  ContactProblem<2>::compute_contact_forces();
+  template double
+  ContactProblem<3>::compute_contact_forces();
+  template unsigned int
+  ContactProblem<2>::update_active_set();
+  template unsigned int
+  ContactProblem<3>::update_active_set();
+  template std::pair<unsigned int, std::size_t>
+  ContactProblem<2>::active_set_signature() const;
+  template std::pair<unsigned int, std::size_t>
+  ContactProblem<3>::active_set_signature() const;
+} // namespace signorini

@@ -1,0 +1,199 @@
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <signorini/contact_problem.h>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_load()
+  {
+    TimerOutput::Scope t(timer, "Assembly: load");
+    const auto &bc = parameters.boundary_conditions;
+    load           = 0;
+
+    FEValues<dim>     fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    FEFaceValues<dim> fe_face_values(*mapping,
+                                     *fe,
+                                     face_quadrature,
+                                     update_values | update_quadrature_points |
+                                       update_JxW_values);
+    const unsigned int n = fe->n_dofs_per_cell();
+    Vector<double>     cell_load(n);
+    Vector<double>     value(dim);
+    std::vector<types::global_dof_index> dof_indices(n);
+
+    // Adds the integral of the vector function f times the shape functions.
+    const auto integrate = [&](const auto &values, const Function<dim> &f) {
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          f.vector_value(values.quadrature_point(q), value);
+          for (unsigned int i = 0; i < n; ++i)
+            cell_load(i) += values.shape_value(i, q) *
+                            value(fe->system_to_component_index(i).first) *
+                            values.JxW(q);
+        }
+    };
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_load = 0;
+          fe_values.reinit(cell);
+          integrate(fe_values, *bc.body_force);
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                bc.traction_ids.count(cell->face(f)->boundary_id()))
+              {
+                fe_face_values.reinit(cell, f);
+                integrate(fe_face_values, *bc.traction);
+              }
+          cell->get_dof_indices(dof_indices);
+          fixed_constraints.distribute_local_to_global(cell_load,
+                                                       dof_indices,
+                                                       load);
+        }
+    load.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_newton_system()
+  {
+    TimerOutput::Scope t(timer, "Assembly: Newton system");
+    const bool active_set_method =
+      parameters.contact.method == ContactParameters::Method::active_set;
+    const bool penalty_method =
+      parameters.contact.method == ContactParameters::Method::penalty;
+
+    // Active contact nodes sit on the obstacle: u_n = -gap.
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    if (active_set_method)
+      for (const auto &node : contact_nodes)
+        if (node.active)
+          {
+            constraints.add_line(node.dofs[dim - 1]);
+            constraints.set_inhomogeneity(node.dofs[dim - 1], -node.gap);
+          }
+    constraints.merge(fixed_constraints,
+                      AffineConstraints<double>::left_object_wins);
+    constraints.close();
+
+    system_matrix = 0;
+    system_rhs    = 0;
+    FEValues<dim>      fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const unsigned int n = fe->n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(n, n);
+    // The right-hand side gets only the lifting of inhomogeneous
+    // constraints here; the load vector is added below.
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+    std::vector<SymmetricTensor<2, dim>> strain(n), stress(n);
+    const FEValuesExtractors::Vector     displacement(0);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_matrix = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  strain[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  stress[i] = parameters.material.template stress<dim>(strain[i]);
+                }
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  cell_matrix(i, j) += strain[i] * stress[j] * fe_values.JxW(q);
+            }
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
+        }
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    system_rhs += load;
+
+    // Penalty: the obstacle pushes back with p = penetration / epsilon on
+    // the penetrating nodes, p_i m_i = -(u_i + gap_i) m_i / epsilon.
+    if (penalty_method)
+      {
+        const double epsilon = parameters.contact.penalty_parameter;
+        for (const auto &node : contact_nodes)
+          if (node.owned && node.active)
+            {
+              const auto i = node.dofs[dim - 1];
+              system_matrix.add(i, i, node.mass / epsilon);
+              system_rhs(i) -= node.mass * node.gap / epsilon;
+            }
+        system_matrix.compress(VectorOperation::add);
+        system_rhs.compress(VectorOperation::add);
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_residual()
+  {
+    TimerOutput::Scope t(timer, "Assembly: residual");
+    residual = 0;
+    FEValues<dim>      fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const unsigned int n = fe->n_dofs_per_cell();
+    Vector<double>     cell_residual(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
+    const FEValuesExtractors::Vector     displacement(0);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   strain);
+          cell_residual = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const auto stress =
+                parameters.material.template stress<dim>(strain[q]);
+              for (unsigned int i = 0; i < n; ++i)
+                cell_residual(i) +=
+                  fe_values[displacement].symmetric_gradient(i, q) * stress *
+                  fe_values.JxW(q);
+            }
+          cell->get_dof_indices(dof_indices);
+          fixed_constraints.distribute_local_to_global(cell_residual,
+                                                       dof_indices,
+                                                       residual);
+        }
+    residual.compress(VectorOperation::add);
+    residual -= load;
+  }
+
+  template void
+  ContactProblem<2>::assemble_load();
+  template void
+  ContactProblem<3>::assemble_load();
+  template void
+  ContactProblem<2>::assemble_newton_system();
+  template void
+  ContactProblem<3>::assemble_newton_system();
+  template void
+  ContactProblem<2>::assemble_residual();
+  template void
+  ContactProblem<3>::assemble_residual();
+} // namespace signorini

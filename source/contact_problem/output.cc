@@ -1,0 +1,247 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <signorini/contact_problem.h>
+#include <signorini/file_output.h>
+#include <signorini/input_error.h>
+#include <signorini/postprocessors.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_obstacle_and_parameters() const
+  {
+    const std::string &directory = parameters.output.directory;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
+        if (error)
+          throw InputError("Output/Directory",
+                           "cannot create '" + directory +
+                             "': " + error.message());
+        write_atomically(directory + "/parameters.prm",
+                         [this](std::ostream &out) { out << parameter_text; });
+
+        std::vector<Point<dim>> vertices;
+        for (unsigned int v = 0; v < triangulation->n_vertices(); ++v)
+          if (triangulation->get_used_vertices()[v])
+            vertices.push_back(triangulation->get_vertices()[v]);
+        const BoundingBox<dim> box(vertices);
+        write_atomically(directory + "/obstacle.vtu", [&](std::ostream &out) {
+          parameters.obstacle.write_vtu(out, box);
+        });
+      }
+    MPI_Barrier(mpi_communicator);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::record_statistics(const unsigned int cycle)
+  {
+    CycleStatistics<dim> row;
+    row.cycle      = cycle;
+    row.cells      = triangulation->n_global_active_cells();
+    row.dofs       = dof_handler.n_dofs();
+    row.iterations = newton_iterations;
+
+    const bool   contact = parameters.contact.method !=
+                         ContactParameters::Method::none;
+    unsigned int active  = 0;
+    double       penetration = 0.;
+    for (const auto &node : contact_nodes)
+      if (node.owned)
+        {
+          active += contact && node.active ? 1 : 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            row.contact_force[d] += residual(node.dofs[d]);
+          penetration = std::max(penetration,
+                                 -(solution(node.dofs[dim - 1]) + node.gap));
+        }
+    row.active_nodes    = Utilities::MPI::sum(active, mpi_communicator);
+    row.contact_force   = Utilities::MPI::sum(row.contact_force, mpi_communicator);
+    row.max_penetration = Utilities::MPI::max(penetration, mpi_communicator);
+
+    double error_squared = 0.;
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned())
+        error_squared += std::pow(
+          estimated_error_per_cell(cell->active_cell_index()), 2);
+    row.estimated_error =
+      std::sqrt(Utilities::MPI::sum(error_squared, mpi_communicator));
+
+    // Each probe is evaluated by the lowest-ranked process that owns a cell
+    // around it.
+    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    for (const auto &point : parameters.output.probe_points)
+      {
+        Vector<double> value(dim);
+        unsigned int   owner = n_ranks;
+        try
+          {
+            VectorTools::point_value(*mapping, dof_handler, solution, point, value);
+            owner = rank;
+          }
+        catch (...)
+          {}
+        owner = Utilities::MPI::min(owner, mpi_communicator);
+        if (owner == n_ranks)
+          {
+            std::ostringstream text;
+            text << "the point (" << point << ") is not in the body";
+            throw InputError("Output/Probe points", text.str());
+          }
+        Tensor<1, dim> probe;
+        if (rank == owner)
+          for (unsigned int d = 0; d < dim; ++d)
+            probe[d] = value(d);
+        row.probes.push_back(Utilities::MPI::sum(probe, mpi_communicator));
+      }
+    cycle_statistics.push_back(row);
+
+    pcout << "   " << row.iterations << " iterations, " << row.active_nodes
+          << " active nodes, contact force " << row.contact_force[dim - 1]
+          << ", max penetration " << row.max_penetration << std::endl;
+    for (unsigned int i = 0; i < row.probes.size(); ++i)
+      pcout << "   probe " << i << " (" << parameters.output.probe_points[i]
+            << "): u = (" << row.probes[i] << ")" << std::endl;
+  }
+
+  namespace
+  {
+    template <int dim>
+    void
+    write_statistics(std::ostream                            &out,
+                     const std::vector<CycleStatistics<dim>> &rows)
+    {
+      const char *axes = "xyz";
+      out << "cycle,cells,dofs,iterations,active_set";
+      for (unsigned int d = 0; d < dim; ++d)
+        out << ",contact_force_" << axes[d];
+      out << ",max_penetration,estimated_error";
+      for (unsigned int i = 0; !rows.empty() && i < rows[0].probes.size(); ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          out << ",probe" << i << "_u" << axes[d];
+      out << '\n';
+
+      char number[32];
+      const auto put = [&](const double value) {
+        std::snprintf(number, sizeof(number), ",%.10e", value);
+        out << number;
+      };
+      for (const auto &row : rows)
+        {
+          out << row.cycle << ',' << row.cells << ',' << row.dofs << ','
+              << row.iterations << ',' << row.active_nodes;
+          for (unsigned int d = 0; d < dim; ++d)
+            put(row.contact_force[d]);
+          put(row.max_penetration);
+          put(row.estimated_error);
+          for (const auto &probe : row.probes)
+            for (unsigned int d = 0; d < dim; ++d)
+              put(probe[d]);
+          out << '\n';
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::output_results(const unsigned int cycle)
+  {
+    TimerOutput::Scope t(timer, "Output");
+    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+
+    TrilinosWrappers::MPI::Vector owned_active(locally_owned_dofs,
+                                               mpi_communicator);
+    if (parameters.contact.method != ContactParameters::Method::none)
+      for (const auto &node : contact_nodes)
+        if (node.owned && node.active)
+          owned_active(node.dofs[dim - 1]) = 1.;
+    owned_active.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector active(locally_owned_dofs,
+                                         locally_relevant_dofs,
+                                         mpi_communicator);
+    active = owned_active;
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(
+      solution,
+      std::vector<std::string>(dim, "displacement"),
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    const StressPostprocessor<dim> stress(parameters.material);
+    const GapPostprocessor<dim>    gap(parameters.obstacle);
+    const VerticalComponent<dim>   contact_pressure("contact_pressure");
+    const VerticalComponent<dim>   active_set("active_set");
+    data_out.add_data_vector(solution, stress);
+    data_out.add_data_vector(solution, gap);
+    data_out.add_data_vector(pressure, contact_pressure);
+    data_out.add_data_vector(active, active_set);
+    data_out.add_data_vector(estimated_error_per_cell, "kelly_indicator");
+    Vector<float> ranks(triangulation->n_active_cells());
+    ranks = static_cast<float>(rank);
+    data_out.add_data_vector(ranks, "mpi_rank");
+    data_out.build_patches(*mapping);
+
+    const std::string &directory = parameters.output.directory;
+    const std::string  base = "solution-" + Utilities::int_to_string(cycle, 2);
+    if (n_ranks == 1)
+      write_atomically(directory + "/" + base + ".vtu",
+                       [&](std::ostream &out) { data_out.write_vtu(out); });
+    else
+      write_atomically(directory + "/" + base + "." +
+                         Utilities::int_to_string(rank, 4) + ".vtu",
+                       [&](std::ostream &out) { data_out.write_vtu(out); });
+    MPI_Barrier(mpi_communicator);
+
+    const std::string name = base + (n_ranks == 1 ? ".vtu" : ".pvtu");
+    written_cycles.emplace_back(cycle, name);
+    if (rank != 0)
+      return;
+    if (n_ranks > 1)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(base + "." + Utilities::int_to_string(r, 4) + ".vtu");
+        write_atomically(directory + "/" + name, [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
+      }
+    write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+      DataOutBase::write_pvd_record(out, written_cycles);
+    });
+    write_atomically(directory + "/statistics.csv", [&](std::ostream &out) {
+      write_statistics(out, cycle_statistics);
+    });
+  }
+
+  template void
+  ContactProblem<2>::write_obstacle_and_parameters() const;
+  template void
+  ContactProblem<3>::write_obstacle_and_parameters() const;
+  template void
+  ContactProblem<2>::record_statistics(unsigned int);
+  template void
+  ContactProblem<3>::record_statistics(unsigned int);
+  template void
+  ContactProblem<2>::output_results(unsigned int);
+  template void
+  ContactProblem<3>::output_results(unsigned int);
+} // namespace signorini

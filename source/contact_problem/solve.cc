@@ -1,0 +1,112 @@
+#include <signorini/contact_problem.h>
+#include <signorini/failures.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve()
+  {
+    TimerOutput::Scope            t(timer, "Solve: linear system");
+    TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
+                                              mpi_communicator);
+    distributed = solution; // a warm start for the iterative solver
+    constraints.set_zero(distributed);
+    parameters.linear_solver.solve(system_matrix,
+                                   distributed,
+                                   system_rhs,
+                                   constant_modes);
+    constraints.distribute(distributed);
+    solution = distributed;
+  }
+
+  namespace
+  {
+    std::string
+    method_name(const ContactParameters::Method method)
+    {
+      return method == ContactParameters::Method::penalty ? "penalty" :
+                                                            "active set";
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_contact_problem(const unsigned int cycle)
+  {
+    assemble_load();
+    const auto &contact = parameters.contact;
+    if (contact.method == ContactParameters::Method::none)
+      {
+        for (auto &node : contact_nodes)
+          node.active = false;
+        assemble_newton_system();
+        solve();
+        compute_contact_forces();
+        newton_iterations = 1;
+        return;
+      }
+
+    initialize_active_set();
+    std::vector<std::pair<unsigned int, std::size_t>> visited = {
+      active_set_signature()};
+    for (unsigned int iteration = 1; iteration <= contact.max_iterations;
+         ++iteration)
+      {
+        assemble_newton_system();
+        solve();
+        const double       residual_norm = compute_contact_forces();
+        const unsigned int changes       = update_active_set();
+        const auto         signature     = active_set_signature();
+
+        if (parameters.output.verbose)
+          {
+            char line[160];
+            std::snprintf(line,
+                          sizeof(line),
+                          "   iteration %2u: residual %.3e, %u active, %u "
+                          "changed",
+                          iteration,
+                          residual_norm,
+                          signature.first,
+                          changes);
+            pcout << line << std::endl;
+          }
+        if (changes == 0 && residual_norm < contact.tolerance)
+          {
+            newton_iterations = iteration;
+            return;
+          }
+        if (changes > 0 && std::find(visited.begin(), visited.end(),
+                                     signature) != visited.end())
+          throw SolverFailure(
+            exit_status::active_set_cycling,
+            "contact solver (" + method_name(contact.method) +
+              ") is cycling on cycle " + std::to_string(cycle) +
+              ": iteration " + std::to_string(iteration) +
+              " returned to an earlier active set of " +
+              std::to_string(signature.first) + " nodes");
+        visited.push_back(signature);
+      }
+    throw SolverFailure(exit_status::contact_no_converge,
+                        "contact solver (" + method_name(contact.method) +
+                          ") did not converge in " +
+                          std::to_string(contact.max_iterations) +
+                          " iterations on cycle " + std::to_string(cycle) +
+                          " (Contact/Maximum iterations)");
+  }
+
+  template void
+  ContactProblem<2>::solve();
+  template void
+  ContactProblem<3>::solve();
+  template void
+  ContactProblem<2>::solve_contact_problem(unsigned int);
+  template void
+  ContactProblem<3>::solve_contact_problem(unsigned int);
+} // namespace signorini

@@ -1,0 +1,180 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <signorini/geometry.h>
+#include <signorini/input_error.h>
+
+#include <fstream>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  Geometry<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Type",
+                      "rectangle",
+                      Patterns::Selection("rectangle|half ball|gmsh"),
+                      "Shape of the body: a rectangle (box in 3D), a half ball "
+                      "(half-disk in 2D) with its curved face down, or a Gmsh "
+                      "mesh file.");
+    prm.declare_entry("Lower left corner",
+                      "0, 0",
+                      Patterns::Anything(),
+                      "rectangle: corner with the smallest coordinates [mm], "
+                      "e.g. '0, 0' (2D) or '0, 0, 0' (3D).");
+    prm.declare_entry("Upper right corner",
+                      "1, 1",
+                      Patterns::Anything(),
+                      "rectangle: corner with the largest coordinates [mm].");
+    prm.declare_entry("Subdivisions",
+                      "1, 1",
+                      Patterns::Anything(),
+                      "rectangle: number of cells in x, y[, z] on the coarse "
+                      "mesh.");
+    prm.declare_entry("Cell type",
+                      "quadrilateral",
+                      Patterns::Selection("quadrilateral|simplex"),
+                      "rectangle: quadrilateral/hexahedral cells with Q1 "
+                      "elements, or simplex: each quadrilateral split into 8 "
+                      "triangles (hexahedron into 24 tetrahedra) with P1 "
+                      "elements. Simplex meshes run on one process with "
+                      "global refinement.");
+    prm.declare_entry("Center",
+                      "0, 1",
+                      Patterns::Anything(),
+                      "half ball: center of the flat face [mm].");
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(0.),
+                      "half ball: radius [mm].");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "gmsh: the .msh file, relative to the folder of the "
+                      "parameter file. Physical groups of boundary lines "
+                      "(faces in 3D) give the boundary ids.");
+    prm.declare_entry("Initial refinement",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Global refinements of the coarse mesh before cycle 0.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Geometry<dim>::parse_parameters(ParameterHandler  &prm,
+                                  const std::string &prm_directory)
+  {
+    prm.enter_subsection("Geometry");
+    const std::string name = prm.get("Type");
+    type = name == "rectangle" ? Type::rectangle :
+           name == "gmsh"      ? Type::gmsh :
+                                 Type::half_ball;
+    if (type == Type::rectangle)
+      {
+        lower_left   = parse::point<dim>(prm.get("Lower left corner"),
+                                       "Geometry/Lower left corner");
+        upper_right  = parse::point<dim>(prm.get("Upper right corner"),
+                                        "Geometry/Upper right corner");
+        subdivisions = parse::unsigned_list(prm.get("Subdivisions"),
+                                            dim,
+                                            "Geometry/Subdivisions");
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(lower_left[d] < upper_right[d]))
+            throw InputError("Geometry/Upper right corner",
+                             "must exceed the lower left corner in every "
+                             "coordinate");
+      }
+    simplex = prm.get("Cell type") == "simplex";
+    if (type == Type::half_ball)
+      {
+        center = parse::point<dim>(prm.get("Center"), "Geometry/Center");
+        radius = prm.get_double("Radius");
+        if (!(radius > 0))
+          throw InputError("Geometry/Radius", "must be positive");
+      }
+    if (type == Type::gmsh)
+      {
+        mesh_file = prm.get("Mesh file");
+        if (mesh_file.empty())
+          throw InputError("Geometry/Mesh file",
+                           "is required for Type = gmsh");
+        if (mesh_file[0] != '/')
+          mesh_file = prm_directory + "/" + mesh_file;
+        if (!std::ifstream(mesh_file))
+          throw InputError("Geometry/Mesh file",
+                           "cannot open '" + mesh_file + "'");
+      }
+    initial_refinement = prm.get_integer("Initial refinement");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Geometry<dim>::create_coarse_mesh(Triangulation<dim> &coarse_mesh) const
+  {
+    switch (type)
+      {
+        case Type::rectangle:
+          {
+            Triangulation<dim> quads;
+            GridGenerator::subdivided_hyper_rectangle(
+              simplex ? quads : coarse_mesh,
+              subdivisions,
+              lower_left,
+              upper_right,
+              /*colorize=*/true);
+            if (simplex)
+              GridGenerator::convert_hypercube_to_simplex_mesh(quads,
+                                                               coarse_mesh);
+            break;
+          }
+        case Type::half_ball:
+          {
+            // deal.II's half ball lies at x >= 0; turn it so that the curved
+            // face points down (-y in 2D, -z in 3D), then move it to Center.
+            GridGenerator::half_hyper_ball(coarse_mesh, Point<dim>(), radius);
+            const Point<dim> c = center;
+            GridTools::transform(
+              [c](const Point<dim> &p) {
+                Point<dim> q = c;
+                q[0] += p[dim - 1];
+                if (dim == 3)
+                  q[1] += p[1];
+                q[dim - 1] -= p[0];
+                return q;
+              },
+              coarse_mesh);
+            coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
+            break;
+          }
+        case Type::gmsh:
+          {
+            GridIn<dim> grid_in;
+            grid_in.attach_triangulation(coarse_mesh);
+            std::ifstream input(mesh_file);
+            try
+              {
+                grid_in.read_msh(input);
+              }
+            catch (const ExceptionBase &error)
+              {
+                throw InputError("Geometry/Mesh file",
+                                 "cannot read '" + mesh_file +
+                                   "': " + one_line(error));
+              }
+            break;
+          }
+      }
+  }
+
+  template struct Geometry<2>;
+  template struct Geometry<3>;
+} // namespace signorini

@@ -1,0 +1,93 @@
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <signorini/failures.h>
+#include <signorini/linear_solver.h>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  void
+  LinearSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Type",
+                      "direct",
+                      Patterns::Selection("direct|amg cg"),
+                      "direct: sparse LU (Trilinos Amesos KLU); amg cg: "
+                      "conjugate gradients with algebraic multigrid (Trilinos "
+                      "ML), for large 3D meshes and many processes.");
+    prm.declare_entry("Tolerance",
+                      "1e-12",
+                      Patterns::Double(0.),
+                      "amg cg: residual reduction relative to the right-hand "
+                      "side.");
+    prm.declare_entry("Maximum iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "amg cg: iterations allowed per solve.");
+    prm.leave_subsection();
+  }
+
+  void
+  LinearSolver::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    type           = prm.get("Type") == "direct" ? Type::direct : Type::amg_cg;
+    tolerance      = prm.get_double("Tolerance");
+    max_iterations = prm.get_integer("Maximum iterations");
+    prm.leave_subsection();
+  }
+
+  unsigned int
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix   &matrix,
+                      TrilinosWrappers::MPI::Vector          &solution,
+                      const TrilinosWrappers::MPI::Vector    &rhs,
+                      const std::vector<std::vector<bool>>   &constant_modes) const
+  {
+    try
+      {
+        if (type == Type::direct)
+          {
+            SolverControl                  control(1, 0);
+            TrilinosWrappers::SolverDirect solver(
+              control, TrilinosWrappers::SolverDirect::AdditionalData(
+                         false, "Amesos_Klu"));
+            solver.solve(matrix, solution, rhs);
+            return 1;
+          }
+
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        data.constant_modes        = constant_modes;
+        amg.initialize(matrix, data);
+
+        SolverControl control(max_iterations, tolerance * rhs.l2_norm());
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        cg.solve(matrix, solution, rhs, amg);
+        return control.last_step();
+      }
+    catch (const SolverControl::NoConvergence &failure)
+      {
+        throw SolverFailure(exit_status::linear_solver,
+                            "linear solver (CG with AMG) did not converge in " +
+                              std::to_string(failure.last_step) +
+                              " iterations (residual " +
+                              std::to_string(failure.last_residual) + ")");
+      }
+    catch (const ExceptionBase &failure)
+      {
+        throw SolverFailure(exit_status::linear_solver,
+                            std::string("linear solver failed: ") +
+                              "the system is singular or the solver broke "
+                              "down (is the body held against rigid motion?)");
+      }
+  }
+} // namespace signorini

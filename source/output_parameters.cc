@@ -1,0 +1,54 @@
+#include <signorini/input_error.h>
+#include <signorini/output_parameters.h>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  OutputParameters<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Folder for the results (relative to the current "
+                      "folder); created if missing.");
+    prm.declare_entry("Probe points",
+                      "",
+                      Patterns::Anything(),
+                      "Points [mm] whose displacement goes into "
+                      "statistics.csv as probe<i>_ux, probe<i>_uy[, "
+                      "probe<i>_uz], i counting from 0; ';'-separated, e.g. "
+                      "'10, 0; 5, 1'.");
+    prm.declare_entry("Verbose",
+                      "true",
+                      Patterns::Bool(),
+                      "Print a line per Newton iteration as well as the "
+                      "summary of each cycle.");
+    prm.declare_entry("Print timings",
+                      "true",
+                      Patterns::Bool(),
+                      "Print the timer summary at the end of the run.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  OutputParameters<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory = prm.get("Directory");
+    if (directory.empty())
+      throw InputError("Output/Directory", "must not be empty");
+    probe_points =
+      parse::point_list<dim>(prm.get("Probe points"), "Output/Probe points");
+    verbose       = prm.get_bool("Verbose");
+    print_timings = prm.get_bool("Print timings");
+    prm.leave_subsection();
+  }
+
+  template struct OutputParameters<2>;
+  template struct OutputParameters<3>;
+} // namespace signorini

@@ -1,0 +1,150 @@
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <signorini/contact_problem.h>
+#include <signorini/failures.h>
+#include <signorini/input_error.h>
+#include <signorini/parameters.h>
+#include <signorini/program.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const char *usage =
+      "Usage: signorini FILE.prm          run the scene described in FILE.prm\n"
+      "       signorini --print-parameters print every parameter with its\n"
+      "                                    default and documentation\n"
+      "       signorini --help            show this text\n"
+      "Run in parallel with: mpirun -np N signorini FILE.prm\n"
+      "Exit status: 0 success, 1 bad input, 2 contact solver did not converge,\n"
+      "3 active set cycling, 4 linear solver failed, 5 other error.\n";
+
+    /**
+     * Reads @p file into @p prm. `include` lines name files relative to the
+     * folder of @p file. Errors become InputErrors that read "FILE:LINE: what
+     * is wrong".
+     */
+    void
+    parse_file(ParameterHandler &prm, const std::string &file)
+    {
+      const auto path = std::filesystem::absolute(file);
+      const auto cwd  = std::filesystem::current_path();
+      try
+        {
+          std::filesystem::current_path(path.parent_path());
+          prm.parse_input(path.string());
+          std::filesystem::current_path(cwd);
+        }
+      catch (const ExceptionBase &error)
+        {
+          std::filesystem::current_path(cwd);
+          std::string message = one_line(error);
+          const std::regex located("^Line <([0-9]+)> of file <([^>]*)>: (.*)$");
+          std::smatch      match;
+          if (std::regex_match(message, match, located))
+            {
+              const std::string where =
+                match[2] == path.string() ? file : std::string(match[2]);
+              throw InputError::at(where + ":" + std::string(match[1]),
+                                   match[3]);
+            }
+          throw InputError::at(file, message);
+        }
+    }
+
+    template <int dim>
+    void
+    run_scene(ParameterHandler &prm, const std::string &file)
+    {
+      Parameters<dim> parameters;
+      parameters.parse_parameters(
+        prm, std::filesystem::absolute(file).parent_path().string());
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      ContactProblem<dim> problem(parameters, text.str(), MPI_COMM_WORLD);
+      problem.run();
+    }
+  } // namespace
+
+  int
+  run_program(int argc, char **argv)
+  {
+    ConditionalOStream out(std::cout,
+                           Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
+                             0);
+    ConditionalOStream err(std::cerr,
+                           Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
+                             0);
+    const std::vector<std::string> arguments(argv + 1, argv + argc);
+    if (arguments.size() == 1 &&
+        (arguments[0] == "--help" || arguments[0] == "-h"))
+      {
+        out << usage;
+        return exit_status::success;
+      }
+
+    ParameterHandler prm;
+    declare_parameters(prm);
+    if (arguments.size() == 1 && arguments[0] == "--print-parameters")
+      {
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          prm.print_parameters(std::cout, ParameterHandler::PRM);
+        return exit_status::success;
+      }
+    if (arguments.size() != 1 || arguments[0].empty() || arguments[0][0] == '-')
+      {
+        err << "signorini: error: expected one parameter file\n" << usage;
+        return exit_status::input_error;
+      }
+
+    const std::string &file = arguments[0];
+    try
+      {
+        if (!std::ifstream(file))
+          throw InputError::at(file, "cannot open the parameter file");
+        parse_file(prm, file);
+        if (prm.get_integer("Dimension") == 2)
+          run_scene<2>(prm, file);
+        else
+          run_scene<3>(prm, file);
+        return exit_status::success;
+      }
+    catch (const InputError &error)
+      {
+        err << "signorini: error: "
+            << (error.location.empty() ? file : error.location);
+        if (!error.entry.empty())
+          err << ": entry '" << error.entry << "'";
+        err << ": " << error.what() << std::endl;
+        return exit_status::input_error;
+      }
+    catch (const SolverFailure &failure)
+      {
+        err << "signorini: error: " << failure.what() << std::endl;
+        return failure.status;
+      }
+    catch (const ExceptionBase &error)
+      {
+        err << "signorini: error: " << one_line(error) << std::endl;
+      }
+    catch (const std::exception &error)
+      {
+        err << "signorini: error: " << error.what() << std::endl;
+      }
+    catch (...)
+      {
+        err << "signorini: error: unknown failure" << std::endl;
+      }
+    return exit_status::other;
+  }
+} // namespace signorini

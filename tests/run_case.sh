@@ -1,0 +1,53 @@
+#!/bin/sh
+# Test driver: run_case.sh SIGNORINI FILE.prm
+# Prints the program's output, its exit status, the statistics table it wrote,
+# and the verdict of every check listed in FILE.checks (if that file exists).
+# A check line reads   ROW COLUMN OP VALUE [TOLERANCE]
+#   ROW:   a cycle number, `last` or `all`
+#   OP:    near (|x-VALUE| <= TOLERANCE), rnear (relative), lt, le, gt, ge
+# Checks print PASS or FAIL, so numdiff turns a violated bound into a failing test
+# even where the bound is far tighter than numdiff's own tolerance.
+program=$1
+prm=$2
+"$program" "$prm" > run.log 2>&1
+status=$?
+cat run.log
+echo "exit status: $status"
+stats=output/statistics.csv
+[ -f "$stats" ] && { echo "statistics.csv:"; cat "$stats"; }
+checks="${prm%.prm}.checks"
+[ -f "$checks" ] || exit 0
+if [ ! -f "$stats" ]; then
+  echo "checks: FAIL (no $stats)"
+  exit 0
+fi
+awk -F, -v checks="$checks" '
+  NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+  { rows = NR - 1; for (i = 1; i <= NF; ++i) value[rows, i] = $i }
+  function ok(x, op, v, tol) {
+    if (op == "near")  return (x - v <= tol && v - x <= tol)
+    if (op == "rnear") return (x - v <= tol * (v < 0 ? -v : v) && v - x <= tol * (v < 0 ? -v : v))
+    if (op == "lt") return x < v
+    if (op == "le") return x <= v
+    if (op == "gt") return x > v
+    if (op == "ge") return x >= v
+    return 0
+  }
+  END {
+    while ((getline line < checks) > 0) {
+      if (line ~ /^[ \t]*(#|$)/) continue
+      n = split(line, w, /[ \t]+/)
+      if (w[1] == "") { for (i = 1; i < n; ++i) w[i] = w[i + 1]; --n }
+      row = w[1]; name = w[2]; op = w[3]; v = w[4] + 0; tol = w[5] + 0
+      verdict = "PASS"
+      if (!(name in col)) verdict = "FAIL (no column " name ")"
+      else {
+        first = (row == "all") ? 1 : (row == "last" ? rows : row + 1)
+        last  = (row == "all") ? rows : first
+        if (first < 1 || last > rows) verdict = "FAIL (no row " row ")"
+        for (r = first; r <= last && verdict == "PASS"; ++r)
+          if (!ok(value[r, col[name]] + 0, op, v, tol)) verdict = "FAIL (" value[r, col[name]] ")"
+      }
+      printf "check: %s %s %s %s %s: %s\n", row, name, op, w[4], (n > 4 ? w[5] : ""), verdict
+    }
+  }' "$stats"
