@@ -34,11 +34,12 @@ namespace signorini
                       Patterns::Integer(1),
                       "Newton (active set) iterations allowed per cycle.");
     prm.declare_entry("Tolerance",
-                      "1e-10",
+                      "1e-8",
                       Patterns::Double(0.),
                       "Converged when the active set is unchanged and the "
                       "residual (force balance and complementarity, relative "
-                      "to the applied load) is below this.");
+                      "to the applied load) is below this, or no longer falls "
+                      "(the round-off floor of a fine mesh).");
     prm.leave_subsection();
   }
 

@@ -8,6 +8,7 @@
 #include <signorini/parameters.h>
 #include <signorini/program.h>
 
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -71,8 +72,22 @@ namespace signorini
         prm, std::filesystem::absolute(file).parent_path().string());
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::ShortPRM);
-      ContactProblem<dim> problem(parameters, text.str(), MPI_COMM_WORLD);
-      problem.run();
+      // The problem is destroyed before a failure propagates, so that its
+      // timer does not finish while an exception is in flight.
+      std::exception_ptr failure;
+      {
+        ContactProblem<dim> problem(parameters, text.str(), MPI_COMM_WORLD);
+        try
+          {
+            problem.run();
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
+      }
+      if (failure)
+        std::rethrow_exception(failure);
     }
   } // namespace
 

@@ -9,16 +9,20 @@
 # even where the bound is far tighter than numdiff's own tolerance.
 program=$1
 prm=$2
+# deal.II's test runner keeps a file `output` here: run one folder down.
+rm -rf run && mkdir run && cd run || exit 1
 "$program" "$prm" > run.log 2>&1
 status=$?
-cat run.log
+# Messages name files by absolute path; keep the output independent of it.
+sed "s|$(dirname "$prm")/||g" run.log
 echo "exit status: $status"
-stats=output/statistics.csv
-[ -f "$stats" ] && { echo "statistics.csv:"; cat "$stats"; }
+stats=$(find output -name statistics.csv 2>/dev/null | head -n 1)
+[ -d output ] && { echo "files written:"; find output -type f | sort; }
+[ -n "$stats" ] && { echo "statistics.csv:"; cat "$stats"; }
 checks="${prm%.prm}.checks"
 [ -f "$checks" ] || exit 0
-if [ ! -f "$stats" ]; then
-  echo "checks: FAIL (no $stats)"
+if [ -z "$stats" ]; then
+  echo "checks: FAIL (no statistics.csv)"
   exit 0
 fi
 awk -F, -v checks="$checks" '

@@ -30,7 +30,7 @@ namespace signorini
     double       penalty_parameter        = 1e-6;
     double       complementarity_constant = 0.;
     unsigned int max_iterations           = 50;
-    double       tolerance                = 1e-10;
+    double       tolerance                = 1e-8;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -84,6 +84,10 @@ namespace signorini
     statistics() const;
 
   private:
+    // run.cc
+    void
+    run_cycles();
+
     // setup.cc
     void
     make_grid();

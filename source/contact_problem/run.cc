@@ -8,6 +8,22 @@ namespace signorini
   void
   ContactProblem<dim>::run()
   {
+    try
+      {
+        run_cycles();
+      }
+    catch (...)
+      {
+        // A failed run reports one line, not a timer summary.
+        timer.disable_output();
+        throw;
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::run_cycles()
+  {
     make_grid();
     setup_system();
     write_obstacle_and_parameters();
@@ -25,6 +41,10 @@ namespace signorini
       }
   }
 
+  template void
+  ContactProblem<2>::run_cycles();
+  template void
+  ContactProblem<3>::run_cycles();
   template void
   ContactProblem<2>::run();
   template void

@@ -55,6 +55,8 @@ namespace signorini
     initialize_active_set();
     std::vector<std::pair<unsigned int, std::size_t>> visited = {
       active_set_signature()};
+    double       previous_residual = 0.;
+    unsigned int previous_changes  = 1;
     for (unsigned int iteration = 1; iteration <= contact.max_iterations;
          ++iteration)
       {
@@ -77,11 +79,19 @@ namespace signorini
                           changes);
             pcout << line << std::endl;
           }
-        if (changes == 0 && residual_norm < contact.tolerance)
+        // With the active set unchanged, the next step would solve the same
+        // linear system again: a residual that did not fall since the last
+        // step is the round-off floor of this mesh, not a lack of
+        // convergence.
+        const bool stagnated = changes == 0 && previous_changes == 0 &&
+                               residual_norm > 0.5 * previous_residual;
+        if (changes == 0 && (residual_norm < contact.tolerance || stagnated))
           {
             newton_iterations = iteration;
             return;
           }
+        previous_residual = residual_norm;
+        previous_changes  = changes;
         if (changes > 0 && std::find(visited.begin(), visited.end(),
                                      signature) != visited.end())
           throw SolverFailure(
