@@ -54,15 +54,15 @@ namespace signorini
         const auto parts = parse::split(item, ':');
         if (parts.size() != 2)
           throw InputError(entry,
-                           "'" + item + "' is not of the form 'id: components'");
+                           "'" + item +
+                             "' is not of the form 'id: components'");
         const auto ids = parse::boundary_ids(parts[0], entry);
         if (ids.size() != 1 || !seen.insert(*ids.begin()).second)
           throw InputError(entry,
                            "'" + parts[0] +
                              "' is not one boundary id listed once");
-        dirichlet.emplace_back(*ids.begin(),
-                               ComponentMask(
-                                 parse::components(parts[1], dim, entry)));
+        dirichlet.emplace_back(
+          *ids.begin(), ComponentMask(parse::components(parts[1], dim, entry)));
       }
     prescribed_displacement =
       parse_function<dim>(prm.get("Prescribed displacement"),

@@ -9,12 +9,13 @@ namespace signorini
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Method",
-                      "active set",
-                      Patterns::Selection("active set|penalty|none"),
-                      "active set: exact non-penetration (primal-dual active "
-                      "set); penalty: penetration = penalty parameter x contact "
-                      "pressure; none: no contact.");
+    prm.declare_entry(
+      "Method",
+      "active set",
+      Patterns::Selection("active set|penalty|none"),
+      "active set: exact non-penetration (primal-dual active "
+      "set); penalty: penetration = penalty parameter x contact "
+      "pressure; none: no contact.");
     prm.declare_entry("Penalty parameter",
                       "1e-6",
                       Patterns::Double(0.),
@@ -47,10 +48,10 @@ namespace signorini
   ContactParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    const std::string name = prm.get("Method");
-    method = name == "none"    ? Method::none :
-             name == "penalty" ? Method::penalty :
-                                 Method::active_set;
+    const std::string name   = prm.get("Method");
+    method                   = name == "none"    ? Method::none :
+                               name == "penalty" ? Method::penalty :
+                                                   Method::active_set;
     penalty_parameter        = prm.get_double("Penalty parameter");
     complementarity_constant = prm.get_double("Complementarity constant");
     max_iterations           = prm.get_integer("Maximum iterations");

@@ -7,7 +7,7 @@
 namespace signorini
 {
   void
-  write_atomically(const std::string                          &path,
+  write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &write)
   {
     const std::string temporary = path + ".part";

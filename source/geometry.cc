@@ -74,9 +74,9 @@ namespace signorini
   {
     prm.enter_subsection("Geometry");
     const std::string name = prm.get("Type");
-    type = name == "rectangle" ? Type::rectangle :
-           name == "gmsh"      ? Type::gmsh :
-                                 Type::half_ball;
+    type                   = name == "rectangle" ? Type::rectangle :
+                             name == "gmsh"      ? Type::gmsh :
+                                                   Type::half_ball;
     if (type == Type::rectangle)
       {
         lower_left   = parse::point<dim>(prm.get("Lower left corner"),
@@ -104,8 +104,7 @@ namespace signorini
       {
         mesh_file = prm.get("Mesh file");
         if (mesh_file.empty())
-          throw InputError("Geometry/Mesh file",
-                           "is required for Type = gmsh");
+          throw InputError("Geometry/Mesh file", "is required for Type = gmsh");
         if (mesh_file[0] != '/')
           mesh_file = prm_directory + "/" + mesh_file;
         if (!std::ifstream(mesh_file))
@@ -125,12 +124,12 @@ namespace signorini
         case Type::rectangle:
           {
             Triangulation<dim> quads;
-            GridGenerator::subdivided_hyper_rectangle(
-              simplex ? quads : coarse_mesh,
-              subdivisions,
-              lower_left,
-              upper_right,
-              /*colorize=*/true);
+            GridGenerator::subdivided_hyper_rectangle(simplex ? quads :
+                                                                coarse_mesh,
+                                                      subdivisions,
+                                                      lower_left,
+                                                      upper_right,
+                                                      /*colorize=*/true);
             if (simplex)
               GridGenerator::convert_hypercube_to_simplex_mesh(quads,
                                                                coarse_mesh);

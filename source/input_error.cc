@@ -10,7 +10,8 @@ namespace signorini
   InputError::InputError(const std::string &entry, const std::string &message)
     : std::runtime_error(message)
     , entry(entry)
-  {}
+  {
+  }
 
   InputError
   InputError::at(const std::string &location, const std::string &message)
@@ -123,8 +124,7 @@ namespace signorini
         {
           const double value = to_double(item, entry);
           if (value < 1 || value != static_cast<unsigned int>(value))
-            throw InputError(entry,
-                             "'" + item + "' is not a positive integer");
+            throw InputError(entry, "'" + item + "' is not a positive integer");
           values.push_back(static_cast<unsigned int>(value));
         }
       return values;

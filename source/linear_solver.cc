@@ -15,11 +15,12 @@ namespace signorini
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Type",
-                      "direct",
-                      Patterns::Selection("direct|amg cg"),
+                      "automatic",
+                      Patterns::Selection("automatic|direct|amg cg"),
                       "direct: sparse LU (Trilinos Amesos KLU); amg cg: "
                       "conjugate gradients with algebraic multigrid (Trilinos "
-                      "ML), for large 3D meshes and many processes.");
+                      "ML); automatic: direct in 2D, amg cg in 3D, the faster "
+                      "of the two as measured (see README).");
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0.),
@@ -33,20 +34,24 @@ namespace signorini
   }
 
   void
-  LinearSolver::parse_parameters(ParameterHandler &prm)
+  LinearSolver::parse_parameters(ParameterHandler &prm, const unsigned int dim)
   {
     prm.enter_subsection("Linear solver");
-    type           = prm.get("Type") == "direct" ? Type::direct : Type::amg_cg;
+    const std::string name = prm.get("Type");
+    type           = name == "direct" || (name == "automatic" && dim == 2) ?
+                       Type::direct :
+                       Type::amg_cg;
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
   }
 
   unsigned int
-  LinearSolver::solve(const TrilinosWrappers::SparseMatrix   &matrix,
-                      TrilinosWrappers::MPI::Vector          &solution,
-                      const TrilinosWrappers::MPI::Vector    &rhs,
-                      const std::vector<std::vector<bool>>   &constant_modes) const
+  LinearSolver::solve(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    TrilinosWrappers::MPI::Vector        &solution,
+    const TrilinosWrappers::MPI::Vector  &rhs,
+    const std::vector<std::vector<bool>> &constant_modes) const
   {
     try
       {
@@ -54,8 +59,9 @@ namespace signorini
           {
             SolverControl                  control(1, 0);
             TrilinosWrappers::SolverDirect solver(
-              control, TrilinosWrappers::SolverDirect::AdditionalData(
-                         false, "Amesos_Klu"));
+              control,
+              TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                             "Amesos_Klu"));
             solver.solve(matrix, solution, rhs);
             return 1;
           }

@@ -35,7 +35,7 @@ namespace signorini
   Obstacle<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Obstacle");
-    height      = parse_function<dim - 1>(prm.get("Height"), 1, "Obstacle/Height");
+    height = parse_function<dim - 1>(prm.get("Height"), 1, "Obstacle/Height");
     contact_ids = parse::boundary_ids(prm.get("Contact boundary ids"),
                                       "Obstacle/Contact boundary ids");
     prm.leave_subsection();

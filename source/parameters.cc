@@ -7,10 +7,11 @@ namespace signorini
   void
   declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension: 2 (plane strain or plane stress) or 3.");
+    prm.declare_entry(
+      "Dimension",
+      "2",
+      Patterns::Integer(2, 3),
+      "Space dimension: 2 (plane strain or plane stress) or 3.");
     Geometry<2>::declare_parameters(prm);
     Material::declare_parameters(prm);
     BoundaryConditions<2>::declare_parameters(prm);
@@ -31,10 +32,9 @@ namespace signorini
     boundary_conditions.parse_parameters(prm);
     obstacle.parse_parameters(prm);
     contact.parse_parameters(prm);
-    linear_solver.parse_parameters(prm);
+    linear_solver.parse_parameters(prm, dim);
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
-
   }
 
   template struct Parameters<2>;

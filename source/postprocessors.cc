@@ -7,7 +7,8 @@ namespace signorini
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(const Material &material)
     : material(material)
-  {}
+  {
+  }
 
   template <int dim>
   std::vector<std::string>
@@ -78,7 +79,8 @@ namespace signorini
     : DataPostprocessorScalar<dim>("gap",
                                    update_values | update_quadrature_points)
     , obstacle(obstacle)
-  {}
+  {
+  }
 
   template <int dim>
   void
@@ -87,15 +89,15 @@ namespace signorini
     std::vector<Vector<double>>                &computed_quantities) const
   {
     for (unsigned int q = 0; q < computed_quantities.size(); ++q)
-      computed_quantities[q](0) =
-        obstacle.gap(inputs.evaluation_points[q]) +
-        inputs.solution_values[q](dim - 1);
+      computed_quantities[q](0) = obstacle.gap(inputs.evaluation_points[q]) +
+                                  inputs.solution_values[q](dim - 1);
   }
 
   template <int dim>
   VerticalComponent<dim>::VerticalComponent(const std::string &name)
     : DataPostprocessorScalar<dim>(name, update_values)
-  {}
+  {
+  }
 
   template <int dim>
   void

@@ -49,7 +49,7 @@ namespace signorini
       catch (const ExceptionBase &error)
         {
           std::filesystem::current_path(cwd);
-          std::string message = one_line(error);
+          std::string      message = one_line(error);
           const std::regex located("^Line <([0-9]+)> of file <([^>]*)>: (.*)$");
           std::smatch      match;
           if (std::regex_match(message, match, located))
@@ -94,10 +94,10 @@ namespace signorini
   int
   run_program(int argc, char **argv)
   {
-    ConditionalOStream out(std::cout,
+    ConditionalOStream             out(std::cout,
                            Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                              0);
-    ConditionalOStream err(std::cerr,
+    ConditionalOStream             err(std::cerr,
                            Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                              0);
     const std::vector<std::string> arguments(argv + 1, argv + argc);

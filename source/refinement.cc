@@ -36,8 +36,8 @@ namespace signorini
   {
     prm.enter_subsection("Mesh refinement");
     n_cycles = prm.get_integer("Number of cycles");
-    strategy = prm.get("Strategy") == "global" ? Strategy::global :
-                                                 Strategy::kelly;
+    strategy =
+      prm.get("Strategy") == "global" ? Strategy::global : Strategy::kelly;
     refine_fraction  = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
     prm.leave_subsection();

@@ -17,7 +17,11 @@ main(int argc, char **argv)
   if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr)
     execl(SIGNORINI, SIGNORINI, argv[1], static_cast<char *>(nullptr));
   else
-    execl("/bin/sh", "sh", RUN_CASE, SIGNORINI, argv[1],
+    execl("/bin/sh",
+          "sh",
+          RUN_CASE,
+          SIGNORINI,
+          argv[1],
           static_cast<char *>(nullptr));
   std::perror("run_case");
   return 127;

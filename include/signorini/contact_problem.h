@@ -47,14 +47,14 @@ namespace signorini
   template <int dim>
   struct CycleStatistics
   {
-    unsigned int                     cycle;
-    unsigned int                     cells;
-    dealii::types::global_dof_index  dofs;
-    unsigned int                     iterations;
-    unsigned int                     active_nodes;
-    dealii::Tensor<1, dim>           contact_force;
-    double                           max_penetration;
-    double                           estimated_error;
+    unsigned int                        cycle;
+    unsigned int                        cells;
+    dealii::types::global_dof_index     dofs;
+    unsigned int                        iterations;
+    unsigned int                        active_nodes;
+    dealii::Tensor<1, dim>              contact_force;
+    double                              max_penetration;
+    double                              estimated_error;
     std::vector<dealii::Tensor<1, dim>> probes;
   };
 
@@ -134,22 +134,22 @@ namespace signorini
     void
     output_results(const unsigned int cycle);
 
-    const Parameters<dim> &parameters;
-    const std::string      parameter_text;
-    MPI_Comm               mpi_communicator;
+    const Parameters<dim>     &parameters;
+    const std::string          parameter_text;
+    MPI_Comm                   mpi_communicator;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;
 
-    std::unique_ptr<dealii::Triangulation<dim>>      triangulation;
-    bool                                             simplex = false;
-    std::unique_ptr<dealii::FiniteElement<dim>>      fe;
-    const dealii::Mapping<dim>                      *mapping = nullptr;
-    dealii::Quadrature<dim>                          quadrature;
-    dealii::Quadrature<dim - 1>                      face_quadrature;
-    dealii::DoFHandler<dim>                          dof_handler;
-    dealii::IndexSet                                 locally_owned_dofs;
-    dealii::IndexSet                                 locally_relevant_dofs;
-    std::vector<std::vector<bool>>                   constant_modes;
+    std::unique_ptr<dealii::Triangulation<dim>> triangulation;
+    bool                                        simplex = false;
+    std::unique_ptr<dealii::FiniteElement<dim>> fe;
+    const dealii::Mapping<dim>                 *mapping = nullptr;
+    dealii::Quadrature<dim>                     quadrature;
+    dealii::Quadrature<dim - 1>                 face_quadrature;
+    dealii::DoFHandler<dim>                     dof_handler;
+    dealii::IndexSet                            locally_owned_dofs;
+    dealii::IndexSet                            locally_relevant_dofs;
+    std::vector<std::vector<bool>>              constant_modes;
 
     /** Hanging nodes and Dirichlet data; fixed within a cycle. */
     dealii::AffineConstraints<double> fixed_constraints;
@@ -173,7 +173,7 @@ namespace signorini
     unsigned int                  newton_iterations        = 0;
     dealii::Vector<float>         estimated_error_per_cell;
 
-    std::vector<CycleStatistics<dim>>         cycle_statistics;
+    std::vector<CycleStatistics<dim>>           cycle_statistics;
     std::vector<std::pair<double, std::string>> written_cycles;
   };
 } // namespace signorini

@@ -27,7 +27,8 @@ namespace signorini
     SolverFailure(const int status, const std::string &message)
       : std::runtime_error(message)
       , status(status)
-    {}
+    {
+    }
 
     const int status;
   };

@@ -14,7 +14,7 @@ namespace signorini
    * writing fails. Throws std::runtime_error naming the file on failure.
    */
   void
-  write_atomically(const std::string                          &path,
+  write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &write);
 } // namespace signorini
 

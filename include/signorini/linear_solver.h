@@ -13,7 +13,8 @@ namespace signorini
    * The linear solver used in every Newton step: subsection `Linear solver`.
    * `direct` factorises with Trilinos Amesos (KLU); `amg cg` runs conjugate
    * gradients preconditioned by Trilinos ML algebraic multigrid, with the
-   * translations as near-null space.
+   * translations as near-null space; `automatic` takes direct in 2D and
+   * amg cg in 3D.
    */
   class LinearSolver
   {
@@ -27,8 +28,9 @@ namespace signorini
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
+    /** Resolves `automatic` for @p dim space dimensions. */
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
 
     /**
      * Solves @p matrix x = @p rhs. @p constant_modes are the translations

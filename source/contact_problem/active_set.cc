@@ -20,8 +20,9 @@ namespace signorini
       {
         const auto   i = node.dofs[dim - 1];
         const double s = solution(i) + node.gap;
-        node.active    = s <= 0 ||
-                      (!penalty && pressure(i) - complementarity_constant * s > 0);
+        node.active =
+          s <= 0 ||
+          (!penalty && pressure(i) - complementarity_constant * s > 0);
       }
   }
 
@@ -43,7 +44,7 @@ namespace signorini
     TrilinosWrappers::MPI::Vector owned_pressure(locally_owned_dofs,
                                                  mpi_communicator);
     TrilinosWrappers::MPI::Vector balance(residual);
-    double complementarity = 0., contact_force = 0.;
+    double                        complementarity = 0., contact_force = 0.;
     for (const auto &node : contact_nodes)
       if (node.owned)
         {
@@ -54,9 +55,9 @@ namespace signorini
           const double expected =
             parameters.contact.method == ContactParameters::Method::none ?
               lambda :
-            penalty ? node.mass * std::max(0., -s) / epsilon :
-                      node.mass *
-                        std::max(0., p - complementarity_constant * s);
+            penalty ?
+              node.mass * std::max(0., -s) / epsilon :
+              node.mass * std::max(0., p - complementarity_constant * s);
           owned_pressure(i) = p;
           balance(i)        = 0.;
           complementarity += (lambda - expected) * (lambda - expected);
@@ -67,8 +68,8 @@ namespace signorini
     pressure = owned_pressure;
 
     const double balance_norm = balance.l2_norm();
-    complementarity = Utilities::MPI::sum(complementarity, mpi_communicator);
-    contact_force   = Utilities::MPI::sum(contact_force, mpi_communicator);
+    complementarity    = Utilities::MPI::sum(complementarity, mpi_communicator);
+    contact_force      = Utilities::MPI::sum(contact_force, mpi_communicator);
     const double scale = load.l2_norm() + std::sqrt(contact_force);
     return std::sqrt(balance_norm * balance_norm + complementarity) /
            (scale > 0 ? scale : 1.);
@@ -79,7 +80,7 @@ namespace signorini
   ContactProblem<dim>::update_active_set()
   {
     TimerOutput::Scope t(timer, "Active set: update");
-    const bool penalty =
+    const bool         penalty =
       parameters.contact.method == ContactParameters::Method::penalty;
     unsigned int changes = 0;
     for (auto &node : contact_nodes)
@@ -106,15 +107,14 @@ namespace signorini
         {
           ++count;
           std::uint64_t z = node.dofs[dim - 1] + 0x9e3779b97f4a7c15ULL;
-          z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-          z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+          z               = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+          z               = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
           hash += z ^ (z >> 31);
         }
     // Sums of per-process hashes: the same on every process.
     return {Utilities::MPI::sum(count, mpi_communicator),
-            static_cast<std::size_t>(
-              Utilities::MPI::sum(static_cast<unsigned long>(hash),
-                                  mpi_communicator))};
+            static_cast<std::size_t>(Utilities::MPI::sum(
+              static_cast<unsigned long>(hash), mpi_communicator))};
   }
 
   template void

@@ -12,22 +12,22 @@ namespace signorini
   ContactProblem<dim>::assemble_load()
   {
     TimerOutput::Scope t(timer, "Assembly: load");
-    const auto &bc = parameters.boundary_conditions;
-    load           = 0;
+    const auto        &bc = parameters.boundary_conditions;
+    load                  = 0;
 
-    FEValues<dim>     fe_values(*mapping,
+    FEValues<dim>                        fe_values(*mapping,
                             *fe,
                             quadrature,
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim> fe_face_values(*mapping,
+    FEFaceValues<dim>                    fe_face_values(*mapping,
                                      *fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
                                        update_JxW_values);
-    const unsigned int n = fe->n_dofs_per_cell();
-    Vector<double>     cell_load(n);
-    Vector<double>     value(dim);
+    const unsigned int                   n = fe->n_dofs_per_cell();
+    Vector<double>                       cell_load(n);
+    Vector<double>                       value(dim);
     std::vector<types::global_dof_index> dof_indices(n);
 
     // Adds the integral of the vector function f times the shape functions.
@@ -68,7 +68,7 @@ namespace signorini
   ContactProblem<dim>::assemble_newton_system()
   {
     TimerOutput::Scope t(timer, "Assembly: Newton system");
-    const bool active_set_method =
+    const bool         active_set_method =
       parameters.contact.method == ContactParameters::Method::active_set;
     const bool penalty_method =
       parameters.contact.method == ContactParameters::Method::penalty;
@@ -112,7 +112,8 @@ namespace signorini
               for (unsigned int i = 0; i < n; ++i)
                 {
                   strain[i] = fe_values[displacement].symmetric_gradient(i, q);
-                  stress[i] = parameters.material.template stress<dim>(strain[i]);
+                  stress[i] =
+                    parameters.material.template stress<dim>(strain[i]);
                 }
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j < n; ++j)
@@ -149,12 +150,12 @@ namespace signorini
   {
     TimerOutput::Scope t(timer, "Assembly: residual");
     residual = 0;
-    FEValues<dim>      fe_values(*mapping,
+    FEValues<dim>                        fe_values(*mapping,
                             *fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    const unsigned int n = fe->n_dofs_per_cell();
-    Vector<double>     cell_residual(n);
+    const unsigned int                   n = fe->n_dofs_per_cell();
+    Vector<double>                       cell_residual(n);
     std::vector<types::global_dof_index> dof_indices(n);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
     const FEValuesExtractors::Vector     displacement(0);

@@ -55,9 +55,9 @@ namespace signorini
     row.dofs       = dof_handler.n_dofs();
     row.iterations = newton_iterations;
 
-    const bool   contact = parameters.contact.method !=
-                         ContactParameters::Method::none;
-    unsigned int active  = 0;
+    const bool contact =
+      parameters.contact.method != ContactParameters::Method::none;
+    unsigned int active      = 0;
     double       penetration = 0.;
     for (const auto &node : contact_nodes)
       if (node.owned)
@@ -65,24 +65,26 @@ namespace signorini
           active += contact && node.active ? 1 : 0;
           for (unsigned int d = 0; d < dim; ++d)
             row.contact_force[d] += residual(node.dofs[d]);
-          penetration = std::max(penetration,
-                                 -(solution(node.dofs[dim - 1]) + node.gap));
+          penetration =
+            std::max(penetration, -(solution(node.dofs[dim - 1]) + node.gap));
         }
-    row.active_nodes    = Utilities::MPI::sum(active, mpi_communicator);
-    row.contact_force   = Utilities::MPI::sum(row.contact_force, mpi_communicator);
+    row.active_nodes = Utilities::MPI::sum(active, mpi_communicator);
+    row.contact_force =
+      Utilities::MPI::sum(row.contact_force, mpi_communicator);
     row.max_penetration = Utilities::MPI::max(penetration, mpi_communicator);
 
     double error_squared = 0.;
     for (const auto &cell : triangulation->active_cell_iterators())
       if (cell->is_locally_owned())
-        error_squared += std::pow(
-          estimated_error_per_cell(cell->active_cell_index()), 2);
+        error_squared +=
+          std::pow(estimated_error_per_cell(cell->active_cell_index()), 2);
     row.estimated_error =
       std::sqrt(Utilities::MPI::sum(error_squared, mpi_communicator));
 
     // Each probe is evaluated by the lowest-ranked process that owns a cell
     // around it.
-    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
     for (const auto &point : parameters.output.probe_points)
@@ -91,11 +93,13 @@ namespace signorini
         unsigned int   owner = n_ranks;
         try
           {
-            VectorTools::point_value(*mapping, dof_handler, solution, point, value);
+            VectorTools::point_value(
+              *mapping, dof_handler, solution, point, value);
             owner = rank;
           }
         catch (...)
-          {}
+          {
+          }
         owner = Utilities::MPI::min(owner, mpi_communicator);
         if (owner == n_ranks)
           {
@@ -136,7 +140,7 @@ namespace signorini
           out << ",probe" << i << "_u" << axes[d];
       out << '\n';
 
-      char number[32];
+      char       number[32];
       const auto put = [&](const double value) {
         std::snprintf(number, sizeof(number), ",%.10e", value);
         out << number;
@@ -162,7 +166,8 @@ namespace signorini
   ContactProblem<dim>::output_results(const unsigned int cycle)
   {
     TimerOutput::Scope t(timer, "Output");
-    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
 
@@ -219,7 +224,8 @@ namespace signorini
       {
         std::vector<std::string> pieces;
         for (unsigned int r = 0; r < n_ranks; ++r)
-          pieces.push_back(base + "." + Utilities::int_to_string(r, 4) + ".vtu");
+          pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                           ".vtu");
         write_atomically(directory + "/" + name, [&](std::ostream &out) {
           data_out.write_pvtu_record(out, pieces);
         });

@@ -29,8 +29,8 @@ namespace signorini
   ContactProblem<dim>::refine_grid()
   {
     TimerOutput::Scope t(timer, "Refine: mesh and transfer");
-    const auto &refinement = parameters.refinement;
-    auto *distributed =
+    const auto        &refinement = parameters.refinement;
+    auto              *distributed =
       dynamic_cast<parallel::distributed::Triangulation<dim> *>(
         triangulation.get());
 
@@ -73,8 +73,9 @@ namespace signorini
         transfer.prepare_for_coarsening_and_refinement(old_vectors);
         triangulation->execute_coarsening_and_refinement();
         setup_system();
-        std::vector<VectorType> new_vectors(
-          2, VectorType(locally_owned_dofs, mpi_communicator));
+        std::vector<VectorType> new_vectors(2,
+                                            VectorType(locally_owned_dofs,
+                                                       mpi_communicator));
         transfer.interpolate(old_vectors, new_vectors);
         fixed_constraints.distribute(new_vectors[0]);
         solution = new_vectors[0];

@@ -27,7 +27,8 @@ namespace signorini
     make_grid();
     setup_system();
     write_obstacle_and_parameters();
-    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles; ++cycle)
+    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
+         ++cycle)
       {
         if (cycle > 0)
           refine_grid();

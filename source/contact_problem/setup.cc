@@ -24,14 +24,14 @@ namespace signorini
     : parameters(parameters)
     , parameter_text(parameter_text)
     , mpi_communicator(mpi_communicator)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , timer(mpi_communicator,
             pcout,
             parameters.output.print_timings ? TimerOutput::summary :
                                               TimerOutput::never,
             TimerOutput::wall_times)
-  {}
+  {
+  }
 
   template <int dim>
   const std::vector<CycleStatistics<dim>> &
@@ -50,11 +50,12 @@ namespace signorini
     simplex = !coarse_mesh.all_reference_cells_are_hyper_cube();
 
     if (!simplex)
-      triangulation = std::make_unique<parallel::distributed::Triangulation<dim>>(
-        mpi_communicator,
-        typename Triangulation<dim>::MeshSmoothing(
-          Triangulation<dim>::smoothing_on_refinement |
-          Triangulation<dim>::smoothing_on_coarsening));
+      triangulation =
+        std::make_unique<parallel::distributed::Triangulation<dim>>(
+          mpi_communicator,
+          typename Triangulation<dim>::MeshSmoothing(
+            Triangulation<dim>::smoothing_on_refinement |
+            Triangulation<dim>::smoothing_on_coarsening));
     else
       {
         if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
@@ -75,17 +76,17 @@ namespace signorini
       fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
     else
       fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
-    mapping    = &cell_type.template get_default_linear_mapping<dim>();
-    quadrature = cell_type.template get_gauss_type_quadrature<dim>(2);
-    face_quadrature =
-      cell_type.face_reference_cell(0).template get_gauss_type_quadrature<dim - 1>(
-        2);
+    mapping         = &cell_type.template get_default_linear_mapping<dim>();
+    quadrature      = cell_type.template get_gauss_type_quadrature<dim>(2);
+    face_quadrature = cell_type.face_reference_cell(0)
+                        .template get_gauss_type_quadrature<dim - 1>(2);
 
     if (parameters.contact.complementarity_constant > 0)
       complementarity_constant = parameters.contact.complementarity_constant;
     else
-      complementarity_constant = parameters.material.young_modulus /
-                                 GridTools::minimal_cell_diameter(*triangulation);
+      complementarity_constant =
+        parameters.material.young_modulus /
+        GridTools::minimal_cell_diameter(*triangulation);
   }
 
   template <int dim>
@@ -115,20 +116,24 @@ namespace signorini
                                                locally_owned_dofs,
                                                locally_relevant_dofs,
                                                mpi_communicator);
-    DoFTools::make_sparsity_pattern(
-      dof_handler,
-      sparsity,
-      fixed_constraints,
-      false,
-      Utilities::MPI::this_mpi_process(mpi_communicator));
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity,
+                                    fixed_constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
     sparsity.compress();
     system_matrix.reinit(sparsity);
 
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     residual.reinit(locally_owned_dofs, mpi_communicator);
     load.reinit(locally_owned_dofs, mpi_communicator);
-    solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
-    pressure.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
+    pressure.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
 
     DoFTools::extract_constant_modes(dof_handler,
                                      ComponentMask(dim, true),
@@ -168,11 +173,11 @@ namespace signorini
     // Lumped contact-boundary mass: the integral of each vertical shape
     // function over the contact boundary, condensed onto the free nodes.
     TrilinosWrappers::MPI::Vector mass(locally_owned_dofs, mpi_communicator);
-    FEFaceValues<dim>  fe_face_values(*mapping,
+    FEFaceValues<dim>             fe_face_values(*mapping,
                                      *fe,
                                      face_quadrature,
                                      update_values | update_JxW_values);
-    Vector<double>     cell_mass(fe->n_dofs_per_cell());
+    Vector<double>                cell_mass(fe->n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -186,8 +191,8 @@ namespace signorini
                 if (fe->system_to_component_index(i).first == dim - 1)
                   for (const unsigned int q :
                        fe_face_values.quadrature_point_indices())
-                    cell_mass(i) += fe_face_values.shape_value(i, q) *
-                                    fe_face_values.JxW(q);
+                    cell_mass(i) +=
+                      fe_face_values.shape_value(i, q) * fe_face_values.JxW(q);
               cell->get_dof_indices(dof_indices);
               fixed_constraints.distribute_local_to_global(cell_mass,
                                                            dof_indices,

@@ -92,15 +92,16 @@ namespace signorini
           }
         previous_residual = residual_norm;
         previous_changes  = changes;
-        if (changes > 0 && std::find(visited.begin(), visited.end(),
-                                     signature) != visited.end())
-          throw SolverFailure(
-            exit_status::active_set_cycling,
-            "contact solver (" + method_name(contact.method) +
-              ") is cycling on cycle " + std::to_string(cycle) +
-              ": iteration " + std::to_string(iteration) +
-              " returned to an earlier active set of " +
-              std::to_string(signature.first) + " nodes");
+        if (changes > 0 &&
+            std::find(visited.begin(), visited.end(), signature) !=
+              visited.end())
+          throw SolverFailure(exit_status::active_set_cycling,
+                              "contact solver (" + method_name(contact.method) +
+                                ") is cycling on cycle " +
+                                std::to_string(cycle) + ": iteration " +
+                                std::to_string(iteration) +
+                                " returned to an earlier active set of " +
+                                std::to_string(signature.first) + " nodes");
         visited.push_back(signature);
       }
     throw SolverFailure(exit_status::contact_no_converge,
