@@ -105,6 +105,10 @@ namespace signorini
     assemble_residual();
 
     // active_set.cc
+    double
+    deformed_gap(const ContactNode<dim> &node) const;
+    bool
+    update_rule(const ContactNode<dim> &node) const;
     void
     initialize_active_set();
     double

@@ -8,22 +8,34 @@ namespace signorini
   using namespace dealii;
 
   template <int dim>
+  double
+  ContactProblem<dim>::deformed_gap(const ContactNode<dim> &node) const
+  {
+    return solution(node.dofs[dim - 1]) + node.gap;
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::update_rule(const ContactNode<dim> &node) const
+  {
+    // Penalty: the penetrating nodes. Active set: the primal-dual rule
+    // pressure - c x gap > 0.
+    if (parameters.contact.method == ContactParameters::Method::penalty)
+      return deformed_gap(node) < 0;
+    return pressure(node.dofs[dim - 1]) -
+             complementarity_constant * deformed_gap(node) >
+           0;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::initialize_active_set()
   {
     // From the previous cycle's displacement and pressure (zero on cycle 0),
     // with the touching and penetrating nodes active from the start, so that
     // a body held only by the obstacle is supported in the first solve.
-    const bool penalty =
-      parameters.contact.method == ContactParameters::Method::penalty;
     for (auto &node : contact_nodes)
-      {
-        const auto   i = node.dofs[dim - 1];
-        const double s = solution(i) + node.gap;
-        node.active =
-          s <= 0 ||
-          (!penalty && pressure(i) - complementarity_constant * s > 0);
-      }
+      node.active = deformed_gap(node) <= 0 || update_rule(node);
   }
 
   template <int dim>
@@ -51,7 +63,7 @@ namespace signorini
           const auto   i      = node.dofs[dim - 1];
           const double lambda = residual(i);
           const double p      = node.mass > 0 ? lambda / node.mass : 0.;
-          const double s      = solution(i) + node.gap;
+          const double s      = deformed_gap(node);
           const double expected =
             parameters.contact.method == ContactParameters::Method::none ?
               lambda :
@@ -80,15 +92,10 @@ namespace signorini
   ContactProblem<dim>::update_active_set()
   {
     TimerOutput::Scope t(timer, "Active set: update");
-    const bool         penalty =
-      parameters.contact.method == ContactParameters::Method::penalty;
-    unsigned int changes = 0;
+    unsigned int       changes = 0;
     for (auto &node : contact_nodes)
       {
-        const auto   i = node.dofs[dim - 1];
-        const double s = solution(i) + node.gap;
-        const bool   active =
-          penalty ? s < 0 : pressure(i) - complementarity_constant * s > 0;
+        const bool active = update_rule(node);
         if (node.owned && active != node.active)
           ++changes;
         node.active = active;
@@ -117,6 +124,14 @@ namespace signorini
               static_cast<unsigned long>(hash), mpi_communicator))};
   }
 
+  template double
+  ContactProblem<2>::deformed_gap(const ContactNode<2> &) const;
+  template double
+  ContactProblem<3>::deformed_gap(const ContactNode<3> &) const;
+  template bool
+  ContactProblem<2>::update_rule(const ContactNode<2> &) const;
+  template bool
+  ContactProblem<3>::update_rule(const ContactNode<3> &) const;
   template void
   ContactProblem<2>::initialize_active_set();
   template void

@@ -11,38 +11,66 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <sstream>
+#include <stdexcept>
 
 namespace signorini
 {
   using namespace dealii;
+
+  namespace
+  {
+    /**
+     * Runs @p write on every process and throws on every process if it
+     * failed on any, so that no process is left waiting for one that gave up.
+     * Also a barrier: what one process wrote is complete afterwards.
+     */
+    void
+    write_collectively(const MPI_Comm               mpi_communicator,
+                       const std::function<void()> &write)
+    {
+      std::string error;
+      try
+        {
+          write();
+        }
+      catch (const std::exception &failure)
+        {
+          error = failure.what();
+        }
+      const unsigned int failed = error.empty() ? 0 : 1;
+      if (Utilities::MPI::max(failed, mpi_communicator) > 0)
+        throw std::runtime_error(
+          failed ? error : "another process could not write its output");
+    }
+  } // namespace
 
   template <int dim>
   void
   ContactProblem<dim>::write_obstacle_and_parameters() const
   {
     const std::string &directory = parameters.output.directory;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        std::error_code error;
-        std::filesystem::create_directories(directory, error);
-        if (error)
-          throw InputError("Output/Directory",
-                           "cannot create '" + directory +
-                             "': " + error.message());
-        write_atomically(directory + "/parameters.prm",
-                         [this](std::ostream &out) { out << parameter_text; });
+    write_collectively(mpi_communicator, [&]() {
+      if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+        return;
+      std::error_code error;
+      std::filesystem::create_directories(directory, error);
+      if (error)
+        throw std::runtime_error("cannot create the output directory '" +
+                                 directory + "': " + error.message());
+      write_atomically(directory + "/parameters.prm",
+                       [this](std::ostream &out) { out << parameter_text; });
 
-        std::vector<Point<dim>> vertices;
-        for (unsigned int v = 0; v < triangulation->n_vertices(); ++v)
-          if (triangulation->get_used_vertices()[v])
-            vertices.push_back(triangulation->get_vertices()[v]);
-        const BoundingBox<dim> box(vertices);
-        write_atomically(directory + "/obstacle.vtu", [&](std::ostream &out) {
-          parameters.obstacle.write_vtu(out, box);
-        });
-      }
-    MPI_Barrier(mpi_communicator);
+      std::vector<Point<dim>> vertices;
+      for (unsigned int v = 0; v < triangulation->n_vertices(); ++v)
+        if (triangulation->get_used_vertices()[v])
+          vertices.push_back(triangulation->get_vertices()[v]);
+      const BoundingBox<dim> box(vertices);
+      write_atomically(directory + "/obstacle.vtu", [&](std::ostream &out) {
+        parameters.obstacle.write_vtu(out, box);
+      });
+    });
   }
 
   template <int dim>
@@ -207,34 +235,34 @@ namespace signorini
 
     const std::string &directory = parameters.output.directory;
     const std::string  base = "solution-" + Utilities::int_to_string(cycle, 2);
-    if (n_ranks == 1)
-      write_atomically(directory + "/" + base + ".vtu",
+    write_collectively(mpi_communicator, [&]() {
+      const std::string piece =
+        n_ranks == 1 ? base : base + "." + Utilities::int_to_string(rank, 4);
+      write_atomically(directory + "/" + piece + ".vtu",
                        [&](std::ostream &out) { data_out.write_vtu(out); });
-    else
-      write_atomically(directory + "/" + base + "." +
-                         Utilities::int_to_string(rank, 4) + ".vtu",
-                       [&](std::ostream &out) { data_out.write_vtu(out); });
-    MPI_Barrier(mpi_communicator);
+    });
 
     const std::string name = base + (n_ranks == 1 ? ".vtu" : ".pvtu");
     written_cycles.emplace_back(cycle, name);
-    if (rank != 0)
-      return;
-    if (n_ranks > 1)
-      {
-        std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
-                           ".vtu");
-        write_atomically(directory + "/" + name, [&](std::ostream &out) {
-          data_out.write_pvtu_record(out, pieces);
-        });
-      }
-    write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
-      DataOutBase::write_pvd_record(out, written_cycles);
-    });
-    write_atomically(directory + "/statistics.csv", [&](std::ostream &out) {
-      write_statistics(out, cycle_statistics);
+    write_collectively(mpi_communicator, [&]() {
+      if (rank != 0)
+        return;
+      if (n_ranks > 1)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                             ".vtu");
+          write_atomically(directory + "/" + name, [&](std::ostream &out) {
+            data_out.write_pvtu_record(out, pieces);
+          });
+        }
+      write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, written_cycles);
+      });
+      write_atomically(directory + "/statistics.csv", [&](std::ostream &out) {
+        write_statistics(out, cycle_statistics);
+      });
     });
   }
 

@@ -80,13 +80,6 @@ namespace signorini
     quadrature      = cell_type.template get_gauss_type_quadrature<dim>(2);
     face_quadrature = cell_type.face_reference_cell(0)
                         .template get_gauss_type_quadrature<dim - 1>(2);
-
-    if (parameters.contact.complementarity_constant > 0)
-      complementarity_constant = parameters.contact.complementarity_constant;
-    else
-      complementarity_constant =
-        parameters.material.young_modulus /
-        GridTools::minimal_cell_diameter(*triangulation);
   }
 
   template <int dim>
@@ -134,6 +127,15 @@ namespace signorini
     pressure.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
+
+    // c ~ E / h: the stiffness with which a node resists a local
+    // penetration on this mesh.
+    if (parameters.contact.complementarity_constant > 0)
+      complementarity_constant = parameters.contact.complementarity_constant;
+    else
+      complementarity_constant =
+        parameters.material.young_modulus /
+        GridTools::minimal_cell_diameter(*triangulation);
 
     DoFTools::extract_constant_modes(dof_handler,
                                      ComponentMask(dim, true),
