@@ -111,6 +111,8 @@ namespace signorini
     update_rule(const ContactNode<dim> &node) const;
     void
     initialize_active_set();
+    unsigned int
+    activate_first_contact();
     double
     compute_contact_forces();
     unsigned int
@@ -174,8 +176,10 @@ namespace signorini
 
     std::vector<ContactNode<dim>> contact_nodes;
     double                        complementarity_constant = 0.;
-    unsigned int                  newton_iterations        = 0;
-    dealii::Vector<float>         estimated_error_per_cell;
+    /** Gaps below this count as touching: round-off in the body's size. */
+    double                touching_tolerance = 0.;
+    unsigned int          newton_iterations  = 0;
+    dealii::Vector<float> estimated_error_per_cell;
 
     std::vector<CycleStatistics<dim>>           cycle_statistics;
     std::vector<std::pair<double, std::string>> written_cycles;

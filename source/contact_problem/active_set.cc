@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace signorini
 {
@@ -19,12 +20,12 @@ namespace signorini
   ContactProblem<dim>::update_rule(const ContactNode<dim> &node) const
   {
     // Penalty: the penetrating nodes. Active set: the primal-dual rule
-    // pressure - c x gap > 0.
+    // pressure - c x gap > 0. Either way, a gap counts as negative only
+    // beyond round-off, so that a node grazing the obstacle does not flip.
+    const double gap = deformed_gap(node) + touching_tolerance;
     if (parameters.contact.method == ContactParameters::Method::penalty)
-      return deformed_gap(node) < 0;
-    return pressure(node.dofs[dim - 1]) -
-             complementarity_constant * deformed_gap(node) >
-           0;
+      return gap < 0;
+    return pressure(node.dofs[dim - 1]) - complementarity_constant * gap > 0;
   }
 
   template <int dim>
@@ -35,7 +36,38 @@ namespace signorini
     // with the touching and penetrating nodes active from the start, so that
     // a body held only by the obstacle is supported in the first solve.
     for (auto &node : contact_nodes)
-      node.active = deformed_gap(node) <= 0 || update_rule(node);
+      node.active =
+        deformed_gap(node) <= touching_tolerance || update_rule(node);
+  }
+
+  template <int dim>
+  unsigned int
+  ContactProblem<dim>::activate_first_contact()
+  {
+    // After a solve with no contact at all, the displacement is proportional
+    // to the load: scaled by theta_i = gap_i / (-u_i), node i just touches.
+    // The nodes with the smallest theta are where contact begins; starting
+    // from them, rather than from every penetrating node, spares the
+    // iteration from releasing the wrongly active ones one by one.
+    double theta_min = std::numeric_limits<double>::max();
+    for (const auto &node : contact_nodes)
+      {
+        const double u = solution(node.dofs[dim - 1]);
+        if (u < 0)
+          theta_min = std::min(theta_min, node.gap / -u);
+      }
+    theta_min = Utilities::MPI::min(theta_min, mpi_communicator);
+    if (theta_min >= 1.)
+      return 0; // nothing penetrates: the contact-free solution stands
+
+    unsigned int changes = 0;
+    for (auto &node : contact_nodes)
+      {
+        const double u = solution(node.dofs[dim - 1]);
+        node.active    = u < 0 && node.gap / -u <= theta_min * (1. + 1e-6);
+        changes += node.owned && node.active ? 1 : 0;
+      }
+    return Utilities::MPI::sum(changes, mpi_communicator);
   }
 
   template <int dim>
@@ -132,6 +164,10 @@ namespace signorini
   ContactProblem<2>::update_rule(const ContactNode<2> &) const;
   template bool
   ContactProblem<3>::update_rule(const ContactNode<3> &) const;
+  template unsigned int
+  ContactProblem<2>::activate_first_contact();
+  template unsigned int
+  ContactProblem<3>::activate_first_contact();
   template void
   ContactProblem<2>::initialize_active_set();
   template void

@@ -48,6 +48,10 @@ namespace signorini
     Triangulation<dim> coarse_mesh;
     parameters.geometry.create_coarse_mesh(coarse_mesh);
     simplex = !coarse_mesh.all_reference_cells_are_hyper_cube();
+    // The same on every process: the coarse mesh is complete on each.
+    const auto corners =
+      GridTools::compute_bounding_box(coarse_mesh).get_boundary_points();
+    touching_tolerance = 1e-12 * corners.first.distance(corners.second);
 
     if (!simplex)
       triangulation =

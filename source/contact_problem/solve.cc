@@ -60,11 +60,13 @@ namespace signorini
     for (unsigned int iteration = 1; iteration <= contact.max_iterations;
          ++iteration)
       {
+        const bool contact_free = visited.back().first == 0;
         assemble_newton_system();
         solve();
         const double       residual_norm = compute_contact_forces();
-        const unsigned int changes       = update_active_set();
-        const auto         signature     = active_set_signature();
+        const unsigned int changes =
+          contact_free ? activate_first_contact() : update_active_set();
+        const auto signature = active_set_signature();
 
         if (parameters.output.verbose)
           {
