@@ -6,6 +6,8 @@
 #include <signorini/failures.h>
 #include <signorini/linear_solver.h>
 
+#include <cmath>
+
 namespace signorini
 {
   using namespace dealii;
@@ -63,6 +65,16 @@ namespace signorini
               TrilinosWrappers::SolverDirect::AdditionalData(false,
                                                              "Amesos_Klu"));
             solver.solve(matrix, solution, rhs);
+            // KLU does not report a singular matrix: check the result.
+            dealii::TrilinosWrappers::MPI::Vector residual(rhs);
+            matrix.vmult(residual, solution);
+            residual -= rhs;
+            const double error = residual.l2_norm();
+            if (!std::isfinite(error) || error > 1e-6 * rhs.l2_norm())
+              throw SolverFailure(exit_status::linear_solver,
+                                  "linear solver failed: the system is "
+                                  "singular (is the body held against rigid "
+                                  "motion?)");
             return 1;
           }
 

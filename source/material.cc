@@ -13,10 +13,11 @@ namespace signorini
                       "2.1e5",
                       Patterns::Double(0.),
                       "Young's modulus E [MPa = N/mm^2].");
-    prm.declare_entry("Poisson's ratio",
-                      "0.3",
-                      Patterns::Double(-1., 0.5),
-                      "Poisson's ratio nu [-], below 0.5.");
+    prm.declare_entry(
+      "Poisson's ratio",
+      "0.3",
+      Patterns::Double(-1., 0.5),
+      "Poisson's ratio nu [-], between -1 and 0.5 (exclusive).");
     prm.declare_entry("Plane state",
                       "plane strain",
                       Patterns::Selection("plane strain|plane stress"),
@@ -35,6 +36,8 @@ namespace signorini
     prm.leave_subsection();
     if (!(young_modulus > 0))
       throw InputError("Material/Young's modulus", "must be positive");
+    if (!(poisson_ratio > -1.))
+      throw InputError("Material/Poisson's ratio", "must be above -1");
     if (!(poisson_ratio < 0.5))
       throw InputError("Material/Poisson's ratio",
                        "must be below 0.5 (incompressible material)");

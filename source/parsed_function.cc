@@ -4,6 +4,9 @@
 #include <signorini/input_error.h>
 #include <signorini/parsed_function.h>
 
+#include <iostream>
+#include <sstream>
+
 
 namespace signorini
 {
@@ -24,6 +27,10 @@ namespace signorini
 
     const std::string variables = dim == 1 ? "x" : (dim == 2 ? "x,y" : "x,y,z");
     auto function = std::make_unique<dealii::FunctionParser<dim>>(n_components);
+    // deal.II lets muparser describe a parse error on std::cerr over several
+    // lines; keep that quiet and report the parser's own sentence once.
+    std::ostringstream muted;
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(muted.rdbuf());
     try
       {
         function->initialize(variables,
@@ -32,11 +39,16 @@ namespace signorini
         // muparser reports some errors only on evaluation:
         dealii::Vector<double> values(n_components);
         function->vector_value(dealii::Point<dim>(), values);
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const dealii::ExceptionBase &error)
       {
-        throw InputError(entry,
-                         "cannot parse '" + text + "': " + one_line(error));
+        std::cerr.rdbuf(cerr_buffer);
+        std::string       message = one_line(error);
+        const std::string said    = "The parser said: ";
+        if (message.find(said) != std::string::npos)
+          message = message.substr(message.find(said) + said.size());
+        throw InputError(entry, "cannot parse '" + text + "': " + message);
       }
     return function;
   }

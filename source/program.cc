@@ -70,6 +70,14 @@ namespace signorini
       Parameters<dim> parameters;
       parameters.parse_parameters(
         prm, std::filesystem::absolute(file).parent_path().string());
+      // parameters.prm is to run again from anywhere: name the mesh file by
+      // its absolute path.
+      if (parameters.geometry.type == Geometry<dim>::Type::gmsh)
+        {
+          prm.enter_subsection("Geometry");
+          prm.set("Mesh file", parameters.geometry.mesh_file);
+          prm.leave_subsection();
+        }
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::ShortPRM);
       // The problem is destroyed before a failure propagates, so that its
@@ -125,7 +133,7 @@ namespace signorini
     const std::string &file = arguments[0];
     try
       {
-        if (!std::ifstream(file))
+        if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
           throw InputError::at(file, "cannot open the parameter file");
         parse_file(prm, file);
         if (prm.get_integer("Dimension") == 2)

@@ -92,6 +92,9 @@ namespace signorini
     void
     make_grid();
     void
+    check_boundary_ids(
+      const std::vector<dealii::types::boundary_id> &mesh_ids) const;
+    void
     setup_system();
     void
     setup_contact_nodes();

@@ -12,6 +12,10 @@
 #include <signorini/input_error.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <sstream>
 
 namespace signorini
 {
@@ -47,7 +51,12 @@ namespace signorini
     TimerOutput::Scope t(timer, "Setup: grid");
     Triangulation<dim> coarse_mesh;
     parameters.geometry.create_coarse_mesh(coarse_mesh);
+    if (coarse_mesh.get_reference_cells().size() > 1)
+      throw InputError("Geometry/Mesh file",
+                       "the mesh mixes cell types; it must hold only "
+                       "quadrilaterals/hexahedra or only triangles/tetrahedra");
     simplex = !coarse_mesh.all_reference_cells_are_hyper_cube();
+    check_boundary_ids(coarse_mesh.get_boundary_ids());
     // The same on every process: the coarse mesh is complete on each.
     const auto corners =
       GridTools::compute_bounding_box(coarse_mesh).get_boundary_points();
@@ -84,6 +93,34 @@ namespace signorini
     quadrature      = cell_type.template get_gauss_type_quadrature<dim>(2);
     face_quadrature = cell_type.face_reference_cell(0)
                         .template get_gauss_type_quadrature<dim - 1>(2);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_boundary_ids(
+    const std::vector<types::boundary_id> &mesh_ids) const
+  {
+    const auto check = [&](const std::string                  &entry,
+                           const std::set<types::boundary_id> &ids) {
+      for (const auto id : ids)
+        if (std::find(mesh_ids.begin(), mesh_ids.end(), id) == mesh_ids.end())
+          {
+            std::string known;
+            for (const auto mesh_id : mesh_ids)
+              known += (known.empty() ? "" : ", ") + std::to_string(mesh_id);
+            throw InputError(entry,
+                             "boundary id " + std::to_string(id) +
+                               " is not on the mesh, whose boundary ids are " +
+                               known);
+          }
+    };
+    std::set<types::boundary_id> dirichlet_ids;
+    for (const auto &[id, mask] : parameters.boundary_conditions.dirichlet)
+      dirichlet_ids.insert(id);
+    check("Boundary conditions/Dirichlet", dirichlet_ids);
+    check("Boundary conditions/Traction boundary ids",
+          parameters.boundary_conditions.traction_ids);
+    check("Obstacle/Contact boundary ids", parameters.obstacle.contact_ids);
   }
 
   template <int dim>
@@ -154,6 +191,7 @@ namespace signorini
     contact_nodes.clear();
     const auto &contact_ids = parameters.obstacle.contact_ids;
     std::vector<std::pair<types::global_dof_index, ContactNode<dim>>> found;
+    std::optional<Point<dim>> non_finite;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto &face : cell->face_iterators())
@@ -165,10 +203,21 @@ namespace signorini
                   node.dofs[d] = face->vertex_dof_index(v, d);
                 if (fixed_constraints.is_constrained(node.dofs[dim - 1]))
                   continue;
-                node.gap   = parameters.obstacle.gap(face->vertex(v));
+                node.gap = parameters.obstacle.gap(face->vertex(v));
+                if (!std::isfinite(node.gap))
+                  non_finite = face->vertex(v);
                 node.owned = locally_owned_dofs.is_element(node.dofs[dim - 1]);
                 found.emplace_back(node.dofs[dim - 1], node);
               }
+    if (Utilities::MPI::max(non_finite ? 1U : 0U, mpi_communicator) > 0)
+      {
+        std::ostringstream where;
+        if (non_finite)
+          where << " at (" << *non_finite << ")";
+        throw InputError("Obstacle/Height",
+                         "is not a finite number on the contact boundary" +
+                           where.str());
+      }
     std::sort(found.begin(), found.end(), [](const auto &a, const auto &b) {
       return a.first < b.first;
     });

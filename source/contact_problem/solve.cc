@@ -2,6 +2,7 @@
 #include <signorini/failures.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace signorini
@@ -81,16 +82,37 @@ namespace signorini
                           changes);
             pcout << line << std::endl;
           }
-        // With the active set unchanged, the next step would solve the same
-        // linear system again: a residual that did not fall since the last
-        // step is the round-off floor of this mesh, not a lack of
-        // convergence.
-        const bool stagnated = changes == 0 && previous_changes == 0 &&
-                               residual_norm > 0.5 * previous_residual;
-        if (changes == 0 && (residual_norm < contact.tolerance || stagnated))
+        if (!std::isfinite(residual_norm))
+          throw SolverFailure(exit_status::linear_solver,
+                              "the solution is not a number on cycle " +
+                                std::to_string(cycle) +
+                                " (is the body held against rigid motion?)");
+        if (changes == 0 && residual_norm < contact.tolerance)
           {
             newton_iterations = iteration;
             return;
+          }
+        // With the active set unchanged, the next step solves the same linear
+        // system again. A residual that did not fall since the last step
+        // is the round-off floor of a fine mesh if it is near the tolerance,
+        // and a failure if it is not.
+        if (changes == 0 && previous_changes == 0 &&
+            residual_norm > 0.5 * previous_residual)
+          {
+            if (residual_norm < 100. * contact.tolerance)
+              {
+                newton_iterations = iteration;
+                return;
+              }
+            char value[32];
+            std::snprintf(value, sizeof(value), "%.3e", residual_norm);
+            throw SolverFailure(
+              exit_status::contact_no_converge,
+              "contact solver (" + method_name(contact.method) +
+                ") stalled on cycle " + std::to_string(cycle) +
+                " at residual " + value +
+                " with an unchanged active set (is the body held against "
+                "rigid motion? is Linear solver/Tolerance too loose?)");
           }
         previous_residual = residual_norm;
         previous_changes  = changes;
