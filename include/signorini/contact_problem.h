@@ -138,6 +138,10 @@ namespace signorini
     // output.cc
     void
     write_obstacle_and_parameters() const;
+    /** The displacement at @p point, if a locally owned cell holds it. */
+    bool
+    evaluate_displacement(const dealii::Point<dim> &point,
+                          dealii::Tensor<1, dim>   &value) const;
     void
     record_statistics(const unsigned int cycle);
     void

@@ -1,7 +1,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <signorini/contact_problem.h>
 #include <signorini/file_output.h>
@@ -74,6 +74,43 @@ namespace signorini
   }
 
   template <int dim>
+  bool
+  ContactProblem<dim>::evaluate_displacement(const Point<dim> &point,
+                                             Tensor<1, dim>   &value) const
+  {
+    // deal.II 9.4's GridTools::find_active_cell_around_point can return a
+    // tetrahedron that does not contain the point; test containment here.
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          cell->bounding_box().point_inside(point, 1e-10))
+        {
+          Point<dim> unit;
+          try
+            {
+              unit = mapping->transform_real_to_unit_cell(cell, point);
+            }
+          catch (const typename Mapping<dim>::ExcTransformationFailed &)
+            {
+              continue;
+            }
+          if (!cell->reference_cell().contains_point(unit, 1e-10))
+            continue;
+          FEValues<dim> fe_values(*mapping,
+                                  *fe,
+                                  Quadrature<dim>(
+                                    std::vector<Point<dim>>{unit}),
+                                  update_values);
+          fe_values.reinit(cell);
+          std::vector<Vector<double>> values(1, Vector<double>(dim));
+          fe_values.get_function_values(solution, values);
+          for (unsigned int d = 0; d < dim; ++d)
+            value[d] = values[0](d);
+          return true;
+        }
+    return false;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::record_statistics(const unsigned int cycle)
   {
@@ -117,29 +154,20 @@ namespace signorini
       Utilities::MPI::n_mpi_processes(mpi_communicator);
     for (const auto &point : parameters.output.probe_points)
       {
-        Vector<double> value(dim);
-        unsigned int   owner = n_ranks;
-        try
-          {
-            VectorTools::point_value(
-              *mapping, dof_handler, solution, point, value);
-            owner = rank;
-          }
-        catch (...)
-          {
-          }
-        owner = Utilities::MPI::min(owner, mpi_communicator);
+        Tensor<1, dim>     value;
+        const unsigned int owner =
+          Utilities::MPI::min(evaluate_displacement(point, value) ? rank :
+                                                                    n_ranks,
+                              mpi_communicator);
         if (owner == n_ranks)
           {
             std::ostringstream text;
             text << "the point (" << point << ") is not in the body";
             throw InputError("Output/Probe points", text.str());
           }
-        Tensor<1, dim> probe;
-        if (rank == owner)
-          for (unsigned int d = 0; d < dim; ++d)
-            probe[d] = value(d);
-        row.probes.push_back(Utilities::MPI::sum(probe, mpi_communicator));
+        row.probes.push_back(
+          Utilities::MPI::sum(rank == owner ? value : Tensor<1, dim>(),
+                              mpi_communicator));
       }
     cycle_statistics.push_back(row);
 
