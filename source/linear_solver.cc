@@ -6,6 +6,8 @@
 #include <signorini/failures.h>
 #include <signorini/linear_solver.h>
 
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
 #include <cmath>
 
 namespace signorini
@@ -50,10 +52,10 @@ namespace signorini
 
   unsigned int
   LinearSolver::solve(
-    const TrilinosWrappers::SparseMatrix &matrix,
-    TrilinosWrappers::MPI::Vector        &solution,
-    const TrilinosWrappers::MPI::Vector  &rhs,
-    const std::vector<std::vector<bool>> &constant_modes) const
+    const TrilinosWrappers::SparseMatrix             &matrix,
+    TrilinosWrappers::MPI::Vector                    &solution,
+    const TrilinosWrappers::MPI::Vector              &rhs,
+    const std::vector<TrilinosWrappers::MPI::Vector> &rigid_body_modes) const
   {
     try
       {
@@ -78,14 +80,26 @@ namespace signorini
             return 1;
           }
 
-        TrilinosWrappers::PreconditionAMG                 amg;
+        // ML's parameters as deal.II sets them for an elliptic problem, with
+        // the rigid-body modes (rotations included) as near-null space.
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic              = true;
         data.higher_order_elements = false;
         data.smoother_sweeps       = 2;
         data.aggregation_threshold = 0.02;
-        data.constant_modes        = constant_modes;
-        amg.initialize(matrix, data);
+        Teuchos::ParameterList              ml_parameters;
+        std::unique_ptr<Epetra_MultiVector> unused;
+        data.set_parameters(ml_parameters, unused, matrix);
+        const auto        &map = matrix.trilinos_matrix().DomainMap();
+        Epetra_MultiVector modes(map, rigid_body_modes.size());
+        for (unsigned int k = 0; k < rigid_body_modes.size(); ++k)
+          for (int i = 0; i < map.NumMyElements(); ++i)
+            modes[k][i] = rigid_body_modes[k].trilinos_vector()[0][i];
+        ml_parameters.set("null space: type", "pre-computed");
+        ml_parameters.set("null space: dimension", modes.NumVectors());
+        ml_parameters.set("null space: vectors", modes.Values());
+        TrilinosWrappers::PreconditionAMG amg;
+        amg.initialize(matrix, ml_parameters);
 
         SolverControl control(max_iterations, tolerance * rhs.l2_norm());
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);

@@ -98,6 +98,8 @@ namespace signorini
     setup_system();
     void
     setup_contact_nodes();
+    void
+    setup_rigid_body_modes();
 
     // assembly.cc
     void
@@ -162,7 +164,8 @@ namespace signorini
     dealii::DoFHandler<dim>                     dof_handler;
     dealii::IndexSet                            locally_owned_dofs;
     dealii::IndexSet                            locally_relevant_dofs;
-    std::vector<std::vector<bool>>              constant_modes;
+    /** Translations and rotations, for the AMG (only when it is used). */
+    std::vector<dealii::TrilinosWrappers::MPI::Vector> rigid_body_modes;
 
     /** Hanging nodes and Dirichlet data; fixed within a cycle. */
     dealii::AffineConstraints<double> fixed_constraints;

@@ -13,7 +13,7 @@ namespace signorini
    * The linear solver used in every Newton step: subsection `Linear solver`.
    * `direct` factorises with Trilinos Amesos (KLU); `amg cg` runs conjugate
    * gradients preconditioned by Trilinos ML algebraic multigrid, with the
-   * translations as near-null space; `automatic` takes direct in 2D and
+   * rigid-body modes as near-null space; `automatic` takes direct in 2D and
    * amg cg in 3D.
    */
   class LinearSolver
@@ -33,16 +33,17 @@ namespace signorini
     parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
 
     /**
-     * Solves @p matrix x = @p rhs. @p constant_modes are the translations
-     * (DoFTools::extract_constant_modes) for the AMG. Returns the number of
-     * iterations (1 for the direct solver); throws SolverFailure if the
-     * iteration does not converge.
+     * Solves @p matrix x = @p rhs. @p rigid_body_modes, the near-null space
+     * of elasticity (translations and rotations as displacement vectors),
+     * are used by the AMG. Returns the number of iterations (1 for the direct
+     * solver); throws SolverFailure if the solve fails.
      */
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
           dealii::TrilinosWrappers::MPI::Vector        &solution,
           const dealii::TrilinosWrappers::MPI::Vector  &rhs,
-          const std::vector<std::vector<bool>>         &constant_modes) const;
+          const std::vector<dealii::TrilinosWrappers::MPI::Vector>
+            &rigid_body_modes) const;
 
     Type         type           = Type::direct;
     double       tolerance      = 1e-12;

@@ -21,7 +21,7 @@ namespace signorini
     parameters.linear_solver.solve(system_matrix,
                                    distributed,
                                    system_rhs,
-                                   constant_modes);
+                                   rigid_body_modes);
     constraints.distribute(distributed);
     solution = distributed;
   }
