@@ -79,9 +79,6 @@ namespace signorini
     void
     run();
 
-    /** The statistics of the cycles finished so far. */
-    const std::vector<CycleStatistics<dim>> &
-    statistics() const;
 
   private:
     // run.cc

@@ -38,13 +38,6 @@ namespace signorini
   }
 
   template <int dim>
-  const std::vector<CycleStatistics<dim>> &
-  ContactProblem<dim>::statistics() const
-  {
-    return cycle_statistics;
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::make_grid()
   {
@@ -304,10 +297,6 @@ namespace signorini
   template ContactProblem<3>::ContactProblem(const Parameters<3> &,
                                              const std::string &,
                                              MPI_Comm);
-  template const std::vector<CycleStatistics<2>> &
-  ContactProblem<2>::statistics() const;
-  template const std::vector<CycleStatistics<3>> &
-  ContactProblem<3>::statistics() const;
   template void
   ContactProblem<2>::make_grid();
   template void
