@@ -39,8 +39,10 @@ namespace signorini
                       Patterns::Double(0.),
                       "Converged when the active set is unchanged and the "
                       "residual (force balance and complementarity, relative "
-                      "to the applied load) is below this, or no longer falls "
-                      "(the round-off floor of a fine mesh).");
+                      "to the applied load) is below this, or stops falling "
+                      "below 100 times this (the round-off floor of a fine "
+                      "mesh); a residual that stops falling above that is a "
+                      "failure.");
     prm.leave_subsection();
   }
 
