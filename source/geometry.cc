@@ -7,6 +7,7 @@
 #include <signorini/geometry.h>
 #include <signorini/input_error.h>
 
+#include <cmath>
 #include <fstream>
 
 namespace signorini
@@ -20,9 +21,14 @@ namespace signorini
     prm.enter_subsection("Geometry");
     prm.declare_entry("Type",
                       "rectangle",
-                      Patterns::Selection("rectangle|half ball|gmsh"),
-                      "Shape of the body: a rectangle (box in 3D), a half ball "
-                      "(half-disk in 2D) with its curved face down, or a Gmsh "
+                      Patterns::Selection(
+                        "rectangle|half ball|quarter disk|gmsh"),
+                      "Shape of the body: a rectangle (box in 3D); a half ball "
+                      "(half-disk in 2D) with its curved face down (boundary "
+                      "id 0) and its flat face up (id 1); a quarter disk (2D "
+                      "only), the half of a half-disk at x >= Center x, with "
+                      "the curved face down (id 0), the flat face up (id 1) "
+                      "and the symmetry line x = Center x (id 2); or a Gmsh "
                       "mesh file.");
     prm.declare_entry("Lower left corner",
                       "0, 0",
@@ -49,11 +55,11 @@ namespace signorini
     prm.declare_entry("Center",
                       "0, 1",
                       Patterns::Anything(),
-                      "half ball: center of the flat face [mm].");
+                      "half ball, quarter disk: center of the flat face [mm].");
     prm.declare_entry("Radius",
                       "1",
                       Patterns::Double(0.),
-                      "half ball: radius [mm].");
+                      "half ball, quarter disk: radius [mm].");
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::Anything(),
@@ -74,9 +80,14 @@ namespace signorini
   {
     prm.enter_subsection("Geometry");
     const std::string name = prm.get("Type");
-    type                   = name == "rectangle" ? Type::rectangle :
-                             name == "gmsh"      ? Type::gmsh :
-                                                   Type::half_ball;
+    type                   = name == "rectangle"    ? Type::rectangle :
+                             name == "gmsh"         ? Type::gmsh :
+                             name == "quarter disk" ? Type::quarter_disk :
+                                                      Type::half_ball;
+    if (type == Type::quarter_disk && dim != 2)
+      throw InputError("Geometry/Type",
+                       "quarter disk is a two-dimensional shape; use half "
+                       "ball in 3D");
     if (type == Type::rectangle)
       {
         lower_left   = parse::point<dim>(prm.get("Lower left corner"),
@@ -93,7 +104,7 @@ namespace signorini
                              "coordinate");
       }
     simplex = prm.get("Cell type") == "simplex";
-    if (type == Type::half_ball)
+    if (type == Type::half_ball || type == Type::quarter_disk)
       {
         center = parse::point<dim>(prm.get("Center"), "Geometry/Center");
         radius = prm.get_double("Radius");
@@ -151,6 +162,30 @@ namespace signorini
                 return q;
               },
               coarse_mesh);
+            coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
+            break;
+          }
+        case Type::quarter_disk:
+          {
+            // deal.II's quarter disk lies at x, y >= 0; turn it by -90
+            // degrees so that the curved face points down, move it to
+            // Center, and give the symmetry line x = Center x its own id.
+            GridGenerator::quarter_hyper_ball(coarse_mesh,
+                                              Point<dim>(),
+                                              radius);
+            const Point<dim> c = center;
+            GridTools::transform(
+              [c](const Point<dim> &p) {
+                Point<dim> q = c;
+                q[0] += p[1];
+                q[1] -= p[0];
+                return q;
+              },
+              coarse_mesh);
+            for (const auto &face : coarse_mesh.active_face_iterators())
+              if (face->at_boundary() && face->boundary_id() == 1 &&
+                  std::abs(face->center()[0] - c[0]) < 1e-10 * radius)
+                face->set_boundary_id(2);
             coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
             break;
           }

@@ -22,6 +22,13 @@ namespace signorini
                       "statistics.csv as probe<i>_ux, probe<i>_uy[, "
                       "probe<i>_uz], i counting from 0; ';'-separated, e.g. "
                       "'10, 0; 5, 1'.");
+    prm.declare_entry("Contact pressure table",
+                      "false",
+                      Patterns::Bool(),
+                      "Write contact_pressure-CC.csv for every cycle CC: one "
+                      "row per contact node, sorted by x, with its "
+                      "coordinates x[, y] [mm], the contact pressure [MPa] "
+                      "and the gap to the obstacle after deformation [mm].");
     prm.declare_entry("Verbose",
                       "true",
                       Patterns::Bool(),
@@ -44,8 +51,9 @@ namespace signorini
       throw InputError("Output/Directory", "must not be empty");
     probe_points =
       parse::point_list<dim>(prm.get("Probe points"), "Output/Probe points");
-    verbose       = prm.get_bool("Verbose");
-    print_timings = prm.get_bool("Print timings");
+    verbose                = prm.get_bool("Verbose");
+    print_timings          = prm.get_bool("Print timings");
+    contact_pressure_table = prm.get_bool("Contact pressure table");
     prm.leave_subsection();
   }
 

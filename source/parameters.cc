@@ -20,6 +20,7 @@ namespace signorini
     LinearSolver::declare_parameters(prm);
     Refinement::declare_parameters(prm);
     OutputParameters<2>::declare_parameters(prm);
+    Reference<2>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -35,6 +36,7 @@ namespace signorini
     linear_solver.parse_parameters(prm, dim);
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
+    reference.parse_parameters(prm);
   }
 
   template struct Parameters<2>;

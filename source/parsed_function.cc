@@ -12,9 +12,10 @@ namespace signorini
 {
   template <int dim>
   std::unique_ptr<dealii::FunctionParser<dim>>
-  parse_function(const std::string &text,
-                 const unsigned int n_components,
-                 const std::string &entry)
+  parse_function(const std::string                   &text,
+                 const unsigned int                   n_components,
+                 const std::string                   &entry,
+                 const std::map<std::string, double> &constants)
   {
     auto expressions = parse::split(text, ';');
     if (expressions.size() == 1 && n_components > 1)
@@ -33,9 +34,9 @@ namespace signorini
     std::streambuf    *cerr_buffer = std::cerr.rdbuf(muted.rdbuf());
     try
       {
-        function->initialize(variables,
-                             expressions,
-                             {{"pi", dealii::numbers::PI}});
+        auto all_constants = constants;
+        all_constants.emplace("pi", dealii::numbers::PI);
+        function->initialize(variables, expressions, all_constants);
         // muparser reports some errors only on evaluation:
         dealii::Vector<double> values(n_components);
         function->vector_value(dealii::Point<dim>(), values);
@@ -54,9 +55,18 @@ namespace signorini
   }
 
   template std::unique_ptr<dealii::FunctionParser<1>>
-  parse_function<1>(const std::string &, unsigned int, const std::string &);
+  parse_function<1>(const std::string &,
+                    unsigned int,
+                    const std::string &,
+                    const std::map<std::string, double> &);
   template std::unique_ptr<dealii::FunctionParser<2>>
-  parse_function<2>(const std::string &, unsigned int, const std::string &);
+  parse_function<2>(const std::string &,
+                    unsigned int,
+                    const std::string &,
+                    const std::map<std::string, double> &);
   template std::unique_ptr<dealii::FunctionParser<3>>
-  parse_function<3>(const std::string &, unsigned int, const std::string &);
+  parse_function<3>(const std::string &,
+                    unsigned int,
+                    const std::string &,
+                    const std::map<std::string, double> &);
 } // namespace signorini

@@ -3,8 +3,11 @@
 # Prints the program's output, its exit status, the statistics table it wrote,
 # and the verdict of every check listed in FILE.checks (if that file exists).
 # A check line reads   ROW COLUMN OP VALUE [TOLERANCE]
-#   ROW:   a cycle number, `last` or `all`
-#   OP:    near (|x-VALUE| <= TOLERANCE), rnear (relative), lt, le, gt, ge
+#   ROW:   a cycle number, `last` or `all`; or `rate` (`rate:K`): the check
+#          is on the observed rate, the least-squares slope of log COLUMN
+#          against log dofs over all cycles (from cycle K on)
+#   OP:    near (|x-VALUE| <= TOLERANCE), rnear (relative), lt, le, gt, ge;
+#          or `decreasing` (no VALUE): every row below the one before
 # Checks print PASS or FAIL, so numdiff turns a violated bound into a failing test
 # even where the bound is far tighter than numdiff's own tolerance.
 program=$1
@@ -45,6 +48,26 @@ awk -F, -v checks="$checks" '
       row = w[1]; name = w[2]; op = w[3]; v = w[4] + 0; tol = w[5] + 0
       verdict = "PASS"
       if (!(name in col)) verdict = "FAIL (no column " name ")"
+      else if (row ~ /^rate/) {
+        from = (row ~ /^rate:/) ? substr(row, 6) + 0 : 0
+        n_fit = sx = sy = sxx = sxy = 0
+        for (r = from + 1; r <= rows; ++r) {
+          e = value[r, col[name]] + 0; if (e < 0) e = -e
+          x = log(value[r, col["dofs"]]); y = log(e)
+          ++n_fit; sx += x; sy += y; sxx += x * x; sxy += x * y
+        }
+        if (n_fit < 2) verdict = "FAIL (fewer than two rows)"
+        else {
+          slope = (n_fit * sxy - sx * sy) / (n_fit * sxx - sx * sx)
+          if (!ok(slope, op, v, tol)) verdict = sprintf("FAIL (%.3f)", slope)
+          else verdict = sprintf("PASS (%.2f)", slope)
+        }
+      }
+      else if (op == "decreasing") {
+        for (r = 2; r <= rows && verdict == "PASS"; ++r)
+          if (!(value[r, col[name]] + 0 < value[r - 1, col[name]] + 0))
+            verdict = "FAIL (cycle " (r - 1) ": " value[r, col[name]] ")"
+      }
       else {
         first = (row == "all") ? 1 : (row == "last" ? rows : row + 1)
         last  = (row == "all") ? rows : first

@@ -8,11 +8,13 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <signorini/parameters.h>
 
@@ -33,6 +35,8 @@ namespace signorini
   {
     /** Displacement dofs; the last is the vertical (normal) one. */
     std::array<dealii::types::global_dof_index, dim> dofs;
+    /** Where the node is [mm]. */
+    dealii::Point<dim> position;
     /** Initial gap to the obstacle [mm]. */
     double gap;
     /** Lumped contact-boundary mass, integral of the shape function over
@@ -47,14 +51,38 @@ namespace signorini
   template <int dim>
   struct CycleStatistics
   {
-    unsigned int                        cycle;
-    unsigned int                        cells;
-    dealii::types::global_dof_index     dofs;
-    unsigned int                        iterations;
-    unsigned int                        active_nodes;
-    dealii::Tensor<1, dim>              contact_force;
-    double                              max_penetration;
-    double                              estimated_error;
+    unsigned int                    cycle;
+    unsigned int                    cells;
+    dealii::types::global_dof_index dofs;
+    unsigned int                    iterations;
+    unsigned int                    active_nodes;
+    dealii::Tensor<1, dim>          contact_force;
+    double                          max_penetration;
+    double                          estimated_error;
+    /** Largest nodal contact pressure [MPa]. */
+    double max_pressure = 0.;
+    /** Extent along x of the contact nodes [mm]. */
+    double contact_width = 0.;
+    /** The loads' resultant, the integral of traction and body force [N]. */
+    dealii::Tensor<1, dim> applied_force;
+    /** Resultant of the reactions at the Dirichlet supports [N]. */
+    dealii::Tensor<1, dim> support_reaction;
+    /** Integral of the contact pressure over the contact boundary [N]. */
+    double integrated_pressure = 0.;
+    /** |applied + support reaction + integrated pressure (upwards)| over
+     * |applied|: zero for a body in equilibrium. */
+    double equilibrium_error = 0.;
+    /** Potential energy 1/2 a(u,u) - f(u) [N mm]. */
+    double energy = 0.;
+    /** Relative errors of max_pressure and contact_width against the
+     * Reference (NaN if none). */
+    double max_pressure_error  = 0.;
+    double contact_width_error = 0.;
+    /** Relative energy-norm error against Reference/Energy (NaN if none). */
+    double energy_error = 0.;
+    /** Relative L2 error of the pressure against Reference/Contact pressure
+     * (NaN if none). */
+    double                              pressure_error = 0.;
     std::vector<dealii::Tensor<1, dim>> probes;
   };
 
@@ -105,6 +133,13 @@ namespace signorini
     assemble_load();
     void
     assemble_residual();
+    /** The load vector of one cell: body force and traction [N]. */
+    void
+    assemble_cell_load(
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      dealii::FEValues<dim>                                        &fe_values,
+      dealii::FEFaceValues<dim> &fe_face_values,
+      dealii::Vector<double>    &cell_load) const;
 
     // active_set.cc
     double
@@ -134,6 +169,14 @@ namespace signorini
     void
     refine_grid();
 
+    // postprocessing.cc
+    void
+    evaluate_contact_zone(CycleStatistics<dim> &row) const;
+    void
+    evaluate_balance_and_energy(CycleStatistics<dim> &row) const;
+    void
+    write_contact_pressure_table(const unsigned int cycle) const;
+
     // output.cc
     void
     write_obstacle_and_parameters() const;
@@ -161,6 +204,9 @@ namespace signorini
     dealii::DoFHandler<dim>                     dof_handler;
     dealii::IndexSet                            locally_owned_dofs;
     dealii::IndexSet                            locally_relevant_dofs;
+    /** Dofs on a Dirichlet boundary in a fixed component: where the
+     * support reactions act. */
+    dealii::IndexSet support_dofs;
     /** Translations and rotations, for the AMG (only when it is used). */
     std::vector<dealii::TrilinosWrappers::MPI::Vector> rigid_body_modes;
 

@@ -31,6 +31,7 @@ namespace signorini
     {
       rectangle,
       half_ball,
+      quarter_disk,
       gmsh
     };
 

@@ -17,6 +17,8 @@ namespace signorini
     std::vector<dealii::Point<dim>> probe_points;
     bool                            verbose       = true;
     bool                            print_timings = true;
+    /** Write contact_pressure-CC.csv for every cycle. */
+    bool contact_pressure_table = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -10,6 +10,7 @@
 #include <signorini/material.h>
 #include <signorini/obstacle.h>
 #include <signorini/output_parameters.h>
+#include <signorini/reference.h>
 #include <signorini/refinement.h>
 
 #include <string>
@@ -33,6 +34,7 @@ namespace signorini
     LinearSolver            linear_solver;
     Refinement              refinement;
     OutputParameters<dim>   output;
+    Reference<dim>          reference;
 
     /** Reads every component from @p prm; @p prm_directory resolves
      * relative file names. Throws InputError. */

@@ -9,26 +9,16 @@ namespace signorini
 
   template <int dim>
   void
-  ContactProblem<dim>::assemble_load()
+  ContactProblem<dim>::assemble_cell_load(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    FEValues<dim>                                        &fe_values,
+    FEFaceValues<dim>                                    &fe_face_values,
+    Vector<double>                                       &cell_load) const
   {
-    TimerOutput::Scope t(timer, "Assembly: load");
     const auto        &bc = parameters.boundary_conditions;
-    load                  = 0;
-
-    FEValues<dim>                        fe_values(*mapping,
-                            *fe,
-                            quadrature,
-                            update_values | update_quadrature_points |
-                              update_JxW_values);
-    FEFaceValues<dim>                    fe_face_values(*mapping,
-                                     *fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
-    const unsigned int                   n = fe->n_dofs_per_cell();
-    Vector<double>                       cell_load(n);
-    Vector<double>                       value(dim);
-    std::vector<types::global_dof_index> dof_indices(n);
+    const unsigned int n  = fe->n_dofs_per_cell();
+    Vector<double>     value(dim);
+    cell_load = 0;
 
     // Adds the integral of the vector function f times the shape functions.
     const auto integrate = [&](const auto &values, const Function<dim> &f) {
@@ -42,19 +32,40 @@ namespace signorini
         }
     };
 
+    fe_values.reinit(cell);
+    integrate(fe_values, *bc.body_force);
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() &&
+          bc.traction_ids.count(cell->face(f)->boundary_id()))
+        {
+          fe_face_values.reinit(cell, f);
+          integrate(fe_face_values, *bc.traction);
+        }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_load()
+  {
+    TimerOutput::Scope t(timer, "Assembly: load");
+    load = 0;
+
+    FEValues<dim>                        fe_values(*mapping,
+                            *fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    FEFaceValues<dim>                    fe_face_values(*mapping,
+                                     *fe,
+                                     face_quadrature,
+                                     update_values | update_quadrature_points |
+                                       update_JxW_values);
+    Vector<double>                       cell_load(fe->n_dofs_per_cell());
+    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_load = 0;
-          fe_values.reinit(cell);
-          integrate(fe_values, *bc.body_force);
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                bc.traction_ids.count(cell->face(f)->boundary_id()))
-              {
-                fe_face_values.reinit(cell, f);
-                integrate(fe_face_values, *bc.traction);
-              }
+          assemble_cell_load(cell, fe_values, fe_face_values, cell_load);
           cell->get_dof_indices(dof_indices);
           fixed_constraints.distribute_local_to_global(cell_load,
                                                        dof_indices,
@@ -185,6 +196,18 @@ namespace signorini
     residual -= load;
   }
 
+  template void
+  ContactProblem<2>::assemble_cell_load(
+    const DoFHandler<2>::active_cell_iterator &,
+    FEValues<2> &,
+    FEFaceValues<2> &,
+    Vector<double> &) const;
+  template void
+  ContactProblem<3>::assemble_cell_load(
+    const DoFHandler<3>::active_cell_iterator &,
+    FEValues<3> &,
+    FEFaceValues<3> &,
+    Vector<double> &) const;
   template void
   ContactProblem<2>::assemble_load();
   template void

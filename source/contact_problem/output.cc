@@ -169,11 +169,28 @@ namespace signorini
           Utilities::MPI::sum(rank == owner ? value : Tensor<1, dim>(),
                               mpi_communicator));
       }
+    evaluate_contact_zone(row);
+    evaluate_balance_and_energy(row);
     cycle_statistics.push_back(row);
 
     pcout << "   " << row.iterations << " iterations, " << row.active_nodes
           << " active nodes, contact force " << row.contact_force[dim - 1]
           << ", max penetration " << row.max_penetration << std::endl;
+    pcout << "   max pressure " << row.max_pressure << ", contact width "
+          << row.contact_width << ", energy " << row.energy << std::endl;
+    pcout << "   equilibrium: load (" << row.applied_force << ") + supports ("
+          << row.support_reaction << ") + integrated pressure "
+          << row.integrated_pressure << ": relative mismatch "
+          << row.equilibrium_error << std::endl;
+    if (parameters.reference.max_pressure)
+      pcout << "   max pressure error " << row.max_pressure_error << std::endl;
+    if (parameters.reference.contact_width)
+      pcout << "   contact width error " << row.contact_width_error
+            << std::endl;
+    if (parameters.reference.contact_pressure)
+      pcout << "   pressure error " << row.pressure_error << std::endl;
+    if (parameters.reference.energy)
+      pcout << "   energy error " << row.energy_error << std::endl;
     for (unsigned int i = 0; i < row.probes.size(); ++i)
       pcout << "   probe " << i << " (" << parameters.output.probe_points[i]
             << "): u = (" << row.probes[i] << ")" << std::endl;
@@ -184,13 +201,25 @@ namespace signorini
     template <int dim>
     void
     write_statistics(std::ostream                            &out,
-                     const std::vector<CycleStatistics<dim>> &rows)
+                     const std::vector<CycleStatistics<dim>> &rows,
+                     const Reference<dim>                    &reference)
     {
       const char *axes = "xyz";
       out << "cycle,cells,dofs,iterations,active_set";
       for (unsigned int d = 0; d < dim; ++d)
         out << ",contact_force_" << axes[d];
-      out << ",max_penetration,estimated_error";
+      out << ",max_penetration,estimated_error,max_pressure,contact_width";
+      for (unsigned int d = 0; d < dim; ++d)
+        out << ",support_reaction_" << axes[d];
+      out << ",equilibrium_error,energy";
+      if (reference.max_pressure)
+        out << ",max_pressure_error";
+      if (reference.contact_width)
+        out << ",contact_width_error";
+      if (reference.energy)
+        out << ",energy_error";
+      if (reference.contact_pressure)
+        out << ",pressure_error";
       for (unsigned int i = 0; !rows.empty() && i < rows[0].probes.size(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
           out << ",probe" << i << "_u" << axes[d];
@@ -209,6 +238,20 @@ namespace signorini
             put(row.contact_force[d]);
           put(row.max_penetration);
           put(row.estimated_error);
+          put(row.max_pressure);
+          put(row.contact_width);
+          for (unsigned int d = 0; d < dim; ++d)
+            put(row.support_reaction[d]);
+          put(row.equilibrium_error);
+          put(row.energy);
+          if (reference.max_pressure)
+            put(row.max_pressure_error);
+          if (reference.contact_width)
+            put(row.contact_width_error);
+          if (reference.energy)
+            put(row.energy_error);
+          if (reference.contact_pressure)
+            put(row.pressure_error);
           for (const auto &probe : row.probes)
             for (unsigned int d = 0; d < dim; ++d)
               put(probe[d]);
@@ -289,9 +332,12 @@ namespace signorini
         DataOutBase::write_pvd_record(out, written_cycles);
       });
       write_atomically(directory + "/statistics.csv", [&](std::ostream &out) {
-        write_statistics(out, cycle_statistics);
+        write_statistics(out, cycle_statistics, parameters.reference);
       });
     });
+    if (parameters.output.contact_pressure_table)
+      write_collectively(mpi_communicator,
+                         [&]() { write_contact_pressure_table(cycle); });
   }
 
   template void

@@ -139,6 +139,13 @@ namespace signorini
         mask);
     fixed_constraints.close();
 
+    // The supported dofs, where the support reactions act.
+    support_dofs.clear();
+    support_dofs.set_size(dof_handler.n_dofs());
+    for (const auto &[id, mask] : parameters.boundary_conditions.dirichlet)
+      support_dofs.add_indices(
+        DoFTools::extract_boundary_dofs(dof_handler, mask, {id}));
+
     TrilinosWrappers::SparsityPattern sparsity(locally_owned_dofs,
                                                locally_owned_dofs,
                                                locally_relevant_dofs,
@@ -235,7 +242,8 @@ namespace signorini
                   node.dofs[d] = face->vertex_dof_index(v, d);
                 if (fixed_constraints.is_constrained(node.dofs[dim - 1]))
                   continue;
-                node.gap = parameters.obstacle.gap(face->vertex(v));
+                node.position = face->vertex(v);
+                node.gap      = parameters.obstacle.gap(node.position);
                 if (!std::isfinite(node.gap))
                   non_finite = face->vertex(v);
                 node.owned = locally_owned_dofs.is_element(node.dofs[dim - 1]);
