@@ -15,13 +15,14 @@ namespace signorini
   Reference<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Reference");
-    prm.declare_entry("Function constants",
-                      "",
-                      Patterns::Anything(),
-                      "Names for numbers in the expressions below, "
-                      "separated by ',', each of the form name=expression; "
-                      "an expression may use the names before it, e.g. "
-                      "'R=1, E=1000, nu=0.3, F=10, a=2*sqrt(F*R*(1-nu^2)/(pi*E))'.");
+    prm.declare_entry(
+      "Function constants",
+      "",
+      Patterns::Anything(),
+      "Names for numbers in the expressions below, "
+      "separated by ',', each of the form name=expression; "
+      "an expression may use the names before it, e.g. "
+      "'R=1, E=1000, nu=0.3, F=10, a=2*sqrt(F*R*(1-nu^2)/(pi*E))'.");
     prm.declare_entry(
       "Contact pressure",
       "",
@@ -71,9 +72,11 @@ namespace signorini
           throw InputError("Reference/Function constants",
                            "'" + definition +
                              "' is not of the form name=expression");
-        const double value =
-          parse_function<1>(parts[1], 1, "Reference/Function constants", constants)
-            ->value(Point<1>());
+        const double value = parse_function<1>(parts[1],
+                                               1,
+                                               "Reference/Function constants",
+                                               constants)
+                               ->value(Point<1>());
         if (!std::isfinite(value))
           throw InputError("Reference/Function constants",
                            "'" + definition + "' is not a finite number");

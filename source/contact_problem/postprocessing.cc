@@ -39,9 +39,9 @@ namespace signorini
     max_pressure = Utilities::MPI::max(max_pressure, mpi_communicator);
     row.max_pressure =
       max_pressure == -std::numeric_limits<double>::max() ? 0. : max_pressure;
-    x_min = Utilities::MPI::min(x_min, mpi_communicator);
-    x_max = Utilities::MPI::max(x_max, mpi_communicator);
-    row.contact_width = x_max >= x_min ? x_max - x_min : 0.;
+    x_min                     = Utilities::MPI::min(x_min, mpi_communicator);
+    x_max                     = Utilities::MPI::max(x_max, mpi_communicator);
+    row.contact_width         = x_max >= x_min ? x_max - x_min : 0.;
     const auto relative_error = [](const double                 value,
                                    const std::optional<double> &reference) {
       if (!reference)
@@ -58,13 +58,12 @@ namespace signorini
     // pressures; a hanging node takes the pressure its masters give it, a
     // supported one none. Integrated with a Gauss rule of high order, since
     // a closed-form pressure has a square-root edge.
-    const auto               &ids = parameters.obstacle.contact_ids;
-    const Function<dim>      *exact = parameters.reference.contact_pressure.get();
+    const auto          &ids   = parameters.obstacle.contact_ids;
+    const Function<dim> *exact = parameters.reference.contact_pressure.get();
     const Quadrature<dim - 1> rule =
-      simplex && dim == 3 ?
-        Quadrature<dim - 1>(QGaussSimplex<dim - 1>(4)) :
-        Quadrature<dim - 1>(QGauss<dim - 1>(6));
-    FEFaceValues<dim> fe_face_values(*mapping,
+      simplex && dim == 3 ? Quadrature<dim - 1>(QGaussSimplex<dim - 1>(4)) :
+                            Quadrature<dim - 1>(QGauss<dim - 1>(6));
+    FEFaceValues<dim>                    fe_face_values(*mapping,
                                      *fe,
                                      rule,
                                      update_values | update_quadrature_points |
@@ -118,9 +117,9 @@ namespace signorini
       {
         error_squared = Utilities::MPI::sum(error_squared, mpi_communicator);
         norm_squared  = Utilities::MPI::sum(norm_squared, mpi_communicator);
-        row.pressure_error =
-          norm_squared > 0 ? std::sqrt(error_squared / norm_squared) :
-                             std::sqrt(error_squared);
+        row.pressure_error = norm_squared > 0 ?
+                               std::sqrt(error_squared / norm_squared) :
+                               std::sqrt(error_squared);
       }
   }
 
@@ -137,18 +136,18 @@ namespace signorini
     AffineConstraints<double> hanging_nodes(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);
     hanging_nodes.close();
-    FEValues<dim>      fe_values(*mapping,
+    FEValues<dim>                        fe_values(*mapping,
                             *fe,
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>  fe_face_values(*mapping,
+    FEFaceValues<dim>                    fe_face_values(*mapping,
                                      *fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
                                        update_JxW_values);
-    const unsigned int n = fe->n_dofs_per_cell();
-    Vector<double>     cell_load(n), internal(n);
+    const unsigned int                   n = fe->n_dofs_per_cell();
+    Vector<double>                       cell_load(n), internal(n);
     std::vector<types::global_dof_index> dof_indices(n);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
     const FEValuesExtractors::Vector     displacement(0);
@@ -200,9 +199,8 @@ namespace signorini
     // The obstacle pushes up (along +y in 2D, +z in 3D).
     Tensor<1, dim> balance = row.applied_force + row.support_reaction;
     balance[dim - 1] += row.integrated_pressure;
-    const double scale = row.applied_force.norm();
-    row.equilibrium_error =
-      scale > 0 ? balance.norm() / scale : balance.norm();
+    const double scale    = row.applied_force.norm();
+    row.equilibrium_error = scale > 0 ? balance.norm() / scale : balance.norm();
 
     row.energy_error = std::numeric_limits<double>::quiet_NaN();
     if (const auto &reference = parameters.reference.energy)

@@ -1,0 +1,332 @@
+#!/usr/bin/env python3
+"""Reruns the accuracy study of doc/validation.md and regenerates its tables
+(between the <!-- begin NAME --> and <!-- end NAME --> markers) and charts
+(doc/*.png) from the program's own output.
+
+    scripts/validation             the study, about five minutes
+    scripts/validation --overkill  also recomputes the cantilever's reference
+                                   energy (14 Kelly cycles, 4 GB, ~5 minutes)
+
+Runs go to build/validation/. Needs gnuplot and gmsh (installed if missing).
+"""
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+WORK = os.path.join(ROOT, "build", "validation")
+DOC = os.path.join(ROOT, "doc")
+SIGNORINI = os.path.join(ROOT, "build", "signorini")
+
+# The default scene's potential energy J(u) [N mm per mm], extrapolated from
+# an overkill run: `scripts/validation --overkill` prints how it is made.
+REFERENCE_ENERGY = -6.8812213
+
+# Hertz closed form for prm/hertz_cylinder.prm (R = 1, E = 1000, nu = 0.3,
+# F = 10): contact half-width a and peak pressure p0.
+HERTZ_A = 2 * math.sqrt(10 * 1 * (1 - 0.3**2) / (math.pi * 1000))
+HERTZ_P0 = 2 * 10 / (math.pi * HERTZ_A)
+
+
+def ensure_tools():
+    subprocess.run([os.path.join(ROOT, "scripts", "build")], check=True,
+                   stdout=sys.stderr)
+    missing = [p for p, tool in (("gnuplot-nox", "gnuplot"), ("gmsh", "gmsh"))
+               if subprocess.run(["sh", "-c", "command -v " + tool],
+                                 stdout=subprocess.DEVNULL).returncode]
+    if missing:
+        env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
+        subprocess.run(["apt-get", "update", "-qq"], check=True, env=env)
+        subprocess.run(["apt-get", "install", "-y", "-qq",
+                        "--no-install-recommends"] + missing, check=True,
+                       env=env, stdout=subprocess.DEVNULL)
+
+
+def run(name, base, settings):
+    """Runs `base` (a .prm) with `settings` {subsection: {entry: value}}
+    overriding it; returns the rows of statistics.csv as dicts of floats."""
+    folder = os.path.join(WORK, name)
+    os.makedirs(folder, exist_ok=True)
+    settings = dict(settings)
+    output = dict(settings.get("Output", {}))
+    output.update({"Directory": folder, "Print timings": "false",
+                   "Verbose": "false"})
+    settings["Output"] = output
+    lines = ["include " + os.path.join(ROOT, base)]
+    for section, entries in settings.items():
+        lines.append("subsection " + section)
+        lines += ["  set %s = %s" % item for item in entries.items()]
+        lines.append("end")
+    prm = os.path.join(WORK, name + ".prm")
+    with open(prm, "w") as out:
+        out.write("\n".join(lines) + "\n")
+    print("  " + name, file=sys.stderr)
+    subprocess.run([SIGNORINI, prm], check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(folder, "statistics.csv")) as table:
+        return [{k: float(v) for k, v in row.items()}
+                for row in csv.DictReader(table)]
+
+
+def slope(rows, column, first=0):
+    """Least-squares slope of log(column) against log(dofs)."""
+    points = [(math.log(r["dofs"]), math.log(abs(r[column])))
+              for r in rows if r["cycle"] >= first]
+    n = len(points)
+    sx = sum(x for x, _ in points)
+    sy = sum(y for _, y in points)
+    sxx = sum(x * x for x, _ in points)
+    sxy = sum(x * y for x, y in points)
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx)
+
+
+def write_data(name, rows, columns):
+    path = os.path.join(WORK, name + ".dat")
+    with open(path, "w") as out:
+        for row in rows:
+            out.write(" ".join("%.10g" % row[c] for c in columns) + "\n")
+    return path
+
+
+def gnuplot(script):
+    subprocess.run(["gnuplot"], input=script, text=True, check=True)
+
+
+def table(header, rows):
+    text = "| " + " | ".join(header) + " |\n"
+    text += "|" + "---|" * len(header) + "\n"
+    for row in rows:
+        text += "| " + " | ".join(row) + " |\n"
+    return text
+
+
+def hertz():
+    kelly = run("hertz_kelly", "prm/hertz_cylinder.prm",
+                {"Mesh refinement": {"Number of cycles": "10"}})
+    uniform = run("hertz_global", "prm/hertz_cylinder.prm",
+                  {"Mesh refinement": {"Strategy": "global",
+                                       "Number of cycles": "5"},
+                   "Output": {"Contact pressure table": "false"}})
+    columns = ["dofs", "max_pressure_error", "contact_width_error",
+               "pressure_error"]
+    k = write_data("hertz_kelly", kelly, columns)
+    g = write_data("hertz_global", uniform, columns)
+    gnuplot("""
+set terminal pngcairo size 800,560 font ',11'
+set output '%s/hertz-convergence.png'
+set logscale xy
+set format y '10^{%%L}'
+set xlabel 'degrees of freedom'
+set ylabel 'relative error'
+set title 'Hertz half-disk against the closed form'
+set key bottom left
+set grid
+plot '%s' u 1:4 w lp lw 2 pt 7 lc 1 t 'pressure profile (L2), Kelly', \\
+     '%s' u 1:4 w lp lw 2 pt 6 lc 1 dt 2 t 'pressure profile (L2), global', \\
+     '%s' u 1:2 w lp lw 2 pt 5 lc 2 t 'peak pressure p0, Kelly', \\
+     '%s' u 1:2 w lp lw 2 pt 4 lc 2 dt 2 t 'peak pressure p0, global', \\
+     '%s' u 1:3 w lp lw 2 pt 9 lc 3 t 'half-width a, Kelly', \\
+     '%s' u 1:3 w lp lw 2 pt 8 lc 3 dt 2 t 'half-width a, global'
+""" % (DOC, k, g, k, g, k, g))
+    last = int(kelly[-1]["cycle"])
+    profile = os.path.join(WORK, "hertz_kelly",
+                           "contact_pressure-%02d.csv" % last)
+    gnuplot("""
+set terminal pngcairo size 800,480 font ',11'
+set output '%s/hertz-pressure.png'
+set datafile separator ','
+set xlabel 'x [mm]'
+set ylabel 'contact pressure [MPa]'
+set title 'Hertz half-disk, cycle %d (%d dofs)'
+set grid
+set xrange [0:0.15]
+set yrange [0:65]
+a = %.10g; p0 = %.10g
+p(x) = abs(x) < a ? p0 * sqrt(1 - x**2 / a**2) : 0
+set samples 1000
+plot p(x) w l lw 2 lc rgb 'black' t 'closed form', \\
+     '%s' every ::1 u 1:2 w p pt 7 ps 0.8 lc 1 t 'signorini, nodal pressure'
+""" % (DOC, last, kelly[-1]["dofs"], HERTZ_A, HERTZ_P0, profile))
+
+    def rows_of(rows, strategy):
+        return [[strategy, "%d" % r["cycle"], "%d" % r["dofs"],
+                 "%.2f" % r["max_pressure"], "%.2f %%" % (100 * r["max_pressure_error"]),
+                 "%.4f" % r["contact_width"], "%.2f %%" % (100 * r["contact_width_error"]),
+                 "%.2f %%" % (100 * r["pressure_error"]),
+                 "%.0e" % r["equilibrium_error"]] for r in rows]
+    return table(["refinement", "cycle", "dofs", "p0 [MPa]", "p0 error",
+                  "a [mm]", "a error", "profile L2 error", "equilibrium"],
+                 rows_of(kelly, "Kelly") + rows_of(uniform, "global"))
+
+
+def energy():
+    reference = {"Reference": {"Energy": "%.8f" % REFERENCE_ENERGY},
+                 "Output": {"Probe points": ""}}
+    kelly = run("cantilever_kelly", "prm/cantilever_on_plane.prm",
+                dict(reference, **{"Mesh refinement": {"Number of cycles": "11"}}))
+    uniform = run("cantilever_global", "prm/cantilever_on_plane.prm",
+                  dict(reference, **{"Mesh refinement": {"Strategy": "global",
+                                                         "Number of cycles": "6"}}))
+    columns = ["dofs", "energy_error"]
+    k = write_data("cantilever_kelly", kelly, columns)
+    g = write_data("cantilever_global", uniform, columns)
+    rates = {"Kelly": slope(kelly, "energy_error", 4),
+             "global": slope(uniform, "energy_error", 3)}
+    gnuplot("""
+set terminal pngcairo size 800,560 font ',11'
+set output '%s/energy-convergence.png'
+set logscale xy
+set format y '10^{%%L}'
+set xlabel 'degrees of freedom N'
+set ylabel 'relative energy-norm error'
+set title 'Cantilever on the plane: error against the overkill energy'
+set key bottom left
+set grid
+plot '%s' u 1:2 w lp lw 2 pt 7 lc 1 t 'Kelly (rate %.2f)', \\
+     '%s' u 1:2 w lp lw 2 pt 6 lc 2 t 'global (rate %.2f)', \\
+     [1e3:1e6] 1.3 * x**-0.5 w l dt 2 lc rgb 'gray' t 'N^{-1/2}'
+""" % (DOC, k, rates["Kelly"], g, rates["global"]))
+    rows = []
+    for strategy, data in (("Kelly", kelly), ("global", uniform)):
+        for r in data:
+            rows.append([strategy, "%d" % r["cycle"], "%d" % r["dofs"],
+                         "%.9f" % r["energy"], "%.3e" % r["energy_error"],
+                         "%d" % r["iterations"], "%.0e" % r["equilibrium_error"]])
+    text = table(["refinement", "cycle", "dofs", "energy J(u_h)",
+                  "energy-norm error", "iterations", "equilibrium"], rows)
+    text += ("\nObserved rates (least-squares slope of log error against log "
+             "N): **Kelly %.2f** (cycles 4 to %d), **global %.2f** (cycles 3 "
+             "to %d); over all cycles, Kelly %.2f and global %.2f.\n" %
+             (rates["Kelly"], kelly[-1]["cycle"], rates["global"],
+              uniform[-1]["cycle"], slope(kelly, "energy_error"),
+              slope(uniform, "energy_error")))
+    return text
+
+
+def study_mesh(triangles, nx, ny):
+    mesh = os.path.join(WORK, "beam-%d.msh" % triangles)
+    if not os.path.exists(mesh):
+        subprocess.run(["gmsh", "-2", "-setnumber", "nx", str(nx),
+                        "-setnumber", "ny", str(ny),
+                        os.path.join(DOC, "validation", "beam.geo"),
+                        "-o", mesh], check=True, stdout=subprocess.DEVNULL)
+    return mesh
+
+
+def study(example):
+    if example == 1:
+        base, probe, gap = "prm/cantilever_on_plane.prm", "10, 0", 0.15
+        meshes = {640: (40, 8), 2560: (80, 16), 10240: (160, 32)}
+        bc = {"Dirichlet": "1: all", "Traction boundary ids": "2"}
+        penalties = {2560: ["16e-3", "32e-3", "64e-3"],
+                     10240: ["16e-3", "32e-3", "64e-3"]}
+    else:
+        base, probe, gap = "prm/clamped_beam_on_plane.prm", "5, 0", 0.05
+        meshes = {496: (62, 4), 1984: (124, 8), 7936: (248, 16)}
+        bc = {"Dirichlet": "1: all; 2: all", "Traction boundary ids": "4"}
+        penalties = {496: ["4e-3", "6e-3", "8e-3"],
+                     1984: ["4e-3", "6e-3", "8e-3"],
+                     7936: ["4e-3", "6e-3", "8e-3", "16e-3", "32e-3", "64e-3"]}
+    results = {}
+    for triangles, (nx, ny) in meshes.items():
+        common = {"Geometry": {"Type": "gmsh", "Initial refinement": "0",
+                               "Mesh file": study_mesh(triangles, nx, ny)},
+                  "Boundary conditions": bc,
+                  "Obstacle": {"Contact boundary ids": "3"},
+                  "Mesh refinement": {"Number of cycles": "1"},
+                  "Output": {"Probe points": probe}}
+        methods = [("none", "none", {}), ("active set", "active set", {})]
+        methods += [("penalty " + e, "penalty", {"Penalty parameter": e})
+                    for e in penalties.get(triangles, [])]
+        for label, method, extra in methods:
+            settings = dict(common)
+            settings["Contact"] = dict({"Method": method}, **extra)
+            name = "example%d_%d_%s" % (example, triangles,
+                                        label.replace(" ", "_"))
+            row = run(name, base, settings)[-1]
+            results[(triangles, label)] = row
+    return results, list(meshes), gap
+
+
+def study_tables():
+    text = {}
+    for example, study_none, study_penalty in (
+            (1, {640: -0.8385, 2560: -0.8681, 10240: -0.8762},
+             {("16e-3", 2560): (-0.1769, 0.026941), ("32e-3", 2560): (-0.1885, 0.038512),
+              ("64e-3", 2560): (-0.2047, 0.054710), ("16e-3", 10240): (-0.1637, 0.013708),
+              ("32e-3", 10240): (-0.1696, 0.019623), ("64e-3", 10240): (-0.1780, 0.028012)}),
+            (2, {496: -0.3927, 1984: -0.4102, 7936: -0.4154},
+             {("4e-3", 496): (-0.081207, 0.031207), ("6e-3", 496): (-0.088342, 0.038342),
+              ("8e-3", 496): (-0.094257, 0.044257), ("4e-3", 1984): (-0.065801, 0.015801),
+              ("6e-3", 1984): (-0.069519, 0.046519), ("8e-3", 1984): (-0.072679, 0.022679),
+              ("4e-3", 7936): (-0.057935, 0.007935), ("6e-3", 7936): (-0.059734, 0.009734),
+              ("8e-3", 7936): (-0.061269, 0.011269), ("16e-3", 7936): (-0.066098, 0.016098),
+              ("32e-3", 7936): (-0.073089, 0.023089), ("64e-3", 7936): (-0.083015, 0.033015)})):
+        results, meshes, gap = study(example)
+        uy = "probe0_uy"
+        rows = [["%d" % t, "%.4f" % study_none[t], "%.4f" % results[(t, "none")][uy]]
+                for t in meshes]
+        text["example%d-free" % example] = table(
+            ["triangles", "study u_y(A)", "signorini u_y(A)"], rows)
+        rows = []
+        for (epsilon, t), (study_uy, study_pen) in study_penalty.items():
+            ours = results[(t, "penalty " + epsilon)]
+            rows.append([epsilon, "%d" % t, "%.4f" % study_uy, "%.4f" % study_pen,
+                         "%.4f" % ours[uy], "%.4f" % ours["max_penetration"],
+                         "%d" % ours["iterations"]])
+        for t in meshes:
+            ours = results[(t, "active set")]
+            rows.append(["active set", "%d" % t, "", "", "%.4f" % ours[uy],
+                         "%.0e" % ours["max_penetration"], "%d" % ours["iterations"]])
+        text["example%d-contact" % example] = table(
+            ["method, ε [mm/MPa]", "triangles", "study u_y(A)", "study penetration",
+             "signorini u_y(A)", "signorini penetration", "Newton iterations"],
+            rows)
+    return text
+
+
+def overkill():
+    rows = run("cantilever_overkill", "prm/cantilever_on_plane.prm",
+               {"Mesh refinement": {"Number of cycles": "14"},
+                "Output": {"Probe points": ""}})
+    tail = rows[-4:]
+    xs = [1 / r["dofs"] for r in tail]
+    ys = [r["energy"] for r in tail]
+    n, sx, sy = len(xs), sum(xs), sum(ys)
+    c = (n * sum(x * y for x, y in zip(xs, ys)) - sx * sy) / \
+        (n * sum(x * x for x in xs) - sx * sx)
+    print("overkill: J(u_h) on the last four Kelly cycles (%s dofs): %s" %
+          (", ".join("%d" % r["dofs"] for r in tail),
+           ", ".join("%.10f" % y for y in ys)))
+    print("fitted J(u_h) = J + C/N: J = %.8f (C = %.3g)" % ((sy - c * sx) / n, c))
+
+
+def replace_sections(path, sections):
+    with open(path) as f:
+        text = f.read()
+    for name, body in sections.items():
+        pattern = re.compile(r"(<!-- begin %s -->\n).*?(<!-- end %s -->)" %
+                             (re.escape(name), re.escape(name)), re.S)
+        if not pattern.search(text):
+            sys.exit("scripts/validation: %s has no section '%s'" % (path, name))
+        text = pattern.sub(lambda m: m.group(1) + body + m.group(2), text)
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
+
+
+def main():
+    ensure_tools()
+    os.makedirs(WORK, exist_ok=True)
+    if "--overkill" in sys.argv[1:]:
+        overkill()
+    sections = {"hertz": hertz(), "energy": energy()}
+    sections.update(study_tables())
+    replace_sections(os.path.join(DOC, "validation.md"), sections)
+    print("scripts/validation: doc/validation.md and doc/*.png regenerated")
+
+
+if __name__ == "__main__":
+    main()
