@@ -3,7 +3,7 @@
 (between the <!-- begin NAME --> and <!-- end NAME --> markers) and charts
 (doc/*.png) from the program's own output.
 
-    scripts/validation             the study, about five minutes
+    scripts/validation             the study, about three minutes
     scripts/validation --overkill  also recomputes the cantilever's reference
                                    energy (14 Kelly cycles, 4 GB, ~5 minutes)
 
