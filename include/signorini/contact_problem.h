@@ -133,6 +133,12 @@ namespace signorini
     assemble_load();
     void
     assemble_residual();
+    /** The internal force vector of one cell, the integral of
+     * eps(phi_i) : sigma(u) over the cell @p fe_values was reinit'ed on
+     * [N]; returns the cell's strain energy 1/2 a(u,u) [N mm]. */
+    double
+    assemble_cell_internal_force(const dealii::FEValues<dim> &fe_values,
+                                 dealii::Vector<double>      &internal) const;
     /** The load vector of one cell: body force and traction [N]. */
     void
     assemble_cell_load(

@@ -156,6 +156,28 @@ namespace signorini
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::assemble_cell_internal_force(
+    const FEValues<dim> &fe_values,
+    Vector<double>      &internal) const
+  {
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
+    fe_values[displacement].get_function_symmetric_gradients(solution, strain);
+    internal             = 0;
+    double strain_energy = 0.;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const auto stress = parameters.material.template stress<dim>(strain[q]);
+        strain_energy += 0.5 * (strain[q] * stress) * fe_values.JxW(q);
+        for (unsigned int i = 0; i < internal.size(); ++i)
+          internal(i) += fe_values[displacement].symmetric_gradient(i, q) *
+                         stress * fe_values.JxW(q);
+      }
+    return strain_energy;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::assemble_residual()
   {
@@ -168,25 +190,12 @@ namespace signorini
     const unsigned int                   n = fe->n_dofs_per_cell();
     Vector<double>                       cell_residual(n);
     std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
-    const FEValuesExtractors::Vector     displacement(0);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                   strain);
-          cell_residual = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const auto stress =
-                parameters.material.template stress<dim>(strain[q]);
-              for (unsigned int i = 0; i < n; ++i)
-                cell_residual(i) +=
-                  fe_values[displacement].symmetric_gradient(i, q) * stress *
-                  fe_values.JxW(q);
-            }
+          assemble_cell_internal_force(fe_values, cell_residual);
           cell->get_dof_indices(dof_indices);
           fixed_constraints.distribute_local_to_global(cell_residual,
                                                        dof_indices,
@@ -208,6 +217,12 @@ namespace signorini
     FEValues<3> &,
     FEFaceValues<3> &,
     Vector<double> &) const;
+  template double
+  ContactProblem<2>::assemble_cell_internal_force(const FEValues<2> &,
+                                                  Vector<double> &) const;
+  template double
+  ContactProblem<3>::assemble_cell_internal_force(const FEValues<3> &,
+                                                  Vector<double> &) const;
   template void
   ContactProblem<2>::assemble_load();
   template void

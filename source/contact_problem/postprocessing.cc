@@ -149,8 +149,6 @@ namespace signorini
     const unsigned int                   n = fe->n_dofs_per_cell();
     Vector<double>                       cell_load(n), internal(n);
     std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
-    const FEValuesExtractors::Vector     displacement(0);
 
     Tensor<1, dim> applied, reaction;
     double         energy = 0.;
@@ -158,19 +156,7 @@ namespace signorini
       if (cell->is_locally_owned())
         {
           assemble_cell_load(cell, fe_values, fe_face_values, cell_load);
-          fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                   strain);
-          internal = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const auto stress =
-                parameters.material.template stress<dim>(strain[q]);
-              energy += 0.5 * (strain[q] * stress) * fe_values.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                internal(i) +=
-                  fe_values[displacement].symmetric_gradient(i, q) * stress *
-                  fe_values.JxW(q);
-            }
+          energy += assemble_cell_internal_force(fe_values, internal);
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < n; ++i)
             {
