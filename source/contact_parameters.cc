@@ -12,17 +12,44 @@ namespace signorini
     prm.declare_entry(
       "Method",
       "active set",
-      Patterns::Selection("active set|penalty|none"),
+      Patterns::Selection("active set|penalty|augmented lagrangian|none"),
       "active set: exact non-penetration (primal-dual active "
       "set); penalty: penetration = penalty parameter x contact "
-      "pressure; none: no contact.");
-    prm.declare_entry("Penalty parameter",
-                      "1e-6",
+      "pressure; augmented lagrangian: Uzawa updates of the contact "
+      "pressure around a penalty, each solved by Newton, converging to the "
+      "exact non-penetration; none: no contact.");
+    prm.declare_entry(
+      "Penalty parameter",
+      "0",
+      Patterns::Double(0.),
+      "penalty and augmented lagrangian: epsilon [mm/MPa], the compliance of "
+      "the obstacle's surface: contact pressure = penetration / epsilon "
+      "(augmented lagrangian: plus the multiplier). Penalty: the "
+      "penetration is epsilon x pressure; smaller epsilon, smaller "
+      "penetration and a stiffer system. Augmented lagrangian: the "
+      "multipliers converge by a factor of about r / (1 + r) per update, "
+      "r = epsilon x E / h_min. 0: h_min / E of each cycle's mesh (r = 1).");
+    prm.declare_entry("Multiplier tolerance",
+                      "1e-8",
                       Patterns::Double(0.),
-                      "penalty: epsilon [mm/MPa], the compliance of the "
-                      "obstacle's surface: contact pressure = penetration / "
-                      "epsilon. Smaller epsilon, smaller penetration (in "
-                      "proportion) and a stiffer system.");
+                      "augmented lagrangian: converged when no multiplier "
+                      "(contact pressure) changes by more than this times "
+                      "the largest one in an update, i.e. the penetration is "
+                      "below this x epsilon x the peak pressure.");
+    prm.declare_entry("Maximum updates",
+                      "100",
+                      Patterns::Integer(1),
+                      "augmented lagrangian: multiplier updates allowed "
+                      "per cycle.");
+    prm.declare_entry(
+      "Remedies",
+      "true",
+      Patterns::Bool(),
+      "Apply the cheap remedy when a method fails, and report it: active "
+      "set cycling is broken by fixing the nodes that flip; penalty Newton "
+      "that oscillates or stalls is continued from a 10 times softer "
+      "penalty; augmented lagrangian multipliers that converge slowly "
+      "get a stiffer penalty. false: stop with the failure's exit status.");
     prm.declare_entry("Complementarity constant",
                       "0",
                       Patterns::Double(0.),
@@ -53,13 +80,15 @@ namespace signorini
     const std::string name   = prm.get("Method");
     method                   = name == "none"    ? Method::none :
                                name == "penalty" ? Method::penalty :
-                                                   Method::active_set;
+                               name == "augmented lagrangian" ? Method::augmented_lagrangian :
+                                                                Method::active_set;
     penalty_parameter        = prm.get_double("Penalty parameter");
+    multiplier_tolerance     = prm.get_double("Multiplier tolerance");
+    max_updates              = prm.get_integer("Maximum updates");
+    remedies                 = prm.get_bool("Remedies");
     complementarity_constant = prm.get_double("Complementarity constant");
     max_iterations           = prm.get_integer("Maximum iterations");
     tolerance                = prm.get_double("Tolerance");
     prm.leave_subsection();
-    if (method == Method::penalty && !(penalty_parameter > 0))
-      throw InputError("Contact/Penalty parameter", "must be positive");
   }
 } // namespace signorini

@@ -14,6 +14,11 @@ namespace signorini
    *   the obstacle acts as a Winkler layer of compliance epsilon [mm/MPa]; the
    *   penetration is epsilon times the local pressure. Solved by semismooth
    *   Newton iterations.
+   * - `augmented lagrangian`: Uzawa updates of a multiplier (the contact
+   *   pressure) around a penalty of compliance epsilon: each inner problem
+   *   has the pressure [lambda - gap / epsilon]_+ and is solved by semismooth
+   *   Newton; lambda then takes that pressure. At convergence the
+   *   penetration vanishes, without the penalty's ill-conditioning.
    * - `none`: linear elasticity, the obstacle is ignored (but its gap is
    *   reported).
    */
@@ -23,11 +28,18 @@ namespace signorini
     {
       none,
       active_set,
-      penalty
+      penalty,
+      augmented_lagrangian
     };
 
-    Method       method                   = Method::active_set;
-    double       penalty_parameter        = 1e-6;
+    Method method = Method::active_set;
+    /** epsilon [mm/MPa]; 0: h_min / E of each cycle's mesh. */
+    double penalty_parameter = 0.;
+    /** Relative change of the multipliers at convergence. */
+    double       multiplier_tolerance = 1e-8;
+    unsigned int max_updates          = 100;
+    /** Apply (and report) the cheap remedy of each method's failure. */
+    bool         remedies                 = true;
     double       complementarity_constant = 0.;
     unsigned int max_iterations           = 50;
     double       tolerance                = 1e-8;

@@ -16,6 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <signorini/linear_system_solver.h>
 #include <signorini/parameters.h>
 
 #include <array>
@@ -45,6 +46,9 @@ namespace signorini
     bool   owned;
     /** In the active set (active set method), or penetrating (penalty). */
     bool active = false;
+    /** Augmented Lagrangian multiplier, the contact pressure the penalty
+     * acts around [MPa]; set on owned nodes only. */
+    double multiplier = 0.;
   };
 
   /** The results of one cycle, one row of statistics.csv. */
@@ -55,10 +59,14 @@ namespace signorini
     unsigned int                    cells;
     dealii::types::global_dof_index dofs;
     unsigned int                    iterations;
-    unsigned int                    active_nodes;
-    dealii::Tensor<1, dim>          contact_force;
-    double                          max_penetration;
-    double                          estimated_error;
+    /** Augmented Lagrangian multiplier updates. */
+    unsigned int multiplier_updates = 0;
+    /** The penalty parameter epsilon in use at the end [mm/MPa]. */
+    double                 penalty_parameter = 0.;
+    unsigned int           active_nodes;
+    dealii::Tensor<1, dim> contact_force;
+    double                 max_penetration;
+    double                 estimated_error;
     /** Largest nodal contact pressure [MPa]. */
     double max_pressure = 0.;
     /** Extent along x of the contact nodes [mm]. */
@@ -131,6 +139,10 @@ namespace signorini
     assemble_newton_system();
     void
     assemble_load();
+    /** The stiffness matrix with the current constraints (and the penalty
+     * for @p penalty_method), and its right-hand side. */
+    void
+    assemble_matrix(const bool penalty_method);
     void
     assemble_residual();
     /** The internal force vector of one cell, the integral of
@@ -168,6 +180,14 @@ namespace signorini
     solve();
     void
     solve_contact_problem(const unsigned int cycle);
+    /** Semismooth Newton iterations until the active set settles; for the
+     * augmented Lagrangian method, with the multipliers fixed. */
+    void
+    solve_newton(const unsigned int cycle);
+    /** Augmented Lagrangian: sets the multipliers to the current pressure;
+     * returns the largest change relative to the largest pressure. */
+    double
+    update_multipliers();
 
     // refinement.cc
     void
@@ -223,6 +243,15 @@ namespace signorini
 
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     dealii::TrilinosWrappers::MPI::Vector  system_rhs;
+    /** system_rhs without the augmented Lagrangian multipliers' share. */
+    dealii::TrilinosWrappers::MPI::Vector base_rhs;
+    /** The solver, with the factorisation of system_matrix. */
+    LinearSystemSolver linear_system_solver;
+    /** What system_matrix was assembled for: the active set and epsilon;
+     * while they stay, the matrix and its factorisation are reused. */
+    bool matrix_assembled = false;
+    bool matrix_changed   = true;
+    std::pair<std::pair<unsigned int, std::size_t>, double> assembled_for;
     /** Displacement [mm], with ghost entries. */
     dealii::TrilinosWrappers::MPI::Vector solution;
     /** K u - f with the contact set free: the obstacle's nodal force [N]. */
@@ -235,6 +264,10 @@ namespace signorini
 
     std::vector<ContactNode<dim>> contact_nodes;
     double                        complementarity_constant = 0.;
+    /** The penalty (and augmented Lagrangian) compliance epsilon in use on
+     * this cycle [mm/MPa]. */
+    double       penalty_parameter  = 0.;
+    unsigned int multiplier_updates = 0;
     /** Gaps below this count as touching: round-off in the body's size. */
     double                touching_tolerance = 0.;
     unsigned int          newton_iterations  = 0;

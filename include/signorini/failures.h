@@ -15,6 +15,8 @@ namespace signorini
     constexpr int active_set_cycling  = 3;
     constexpr int linear_solver       = 4;
     constexpr int other               = 5;
+    constexpr int contact_stalled     = 6;
+    constexpr int multipliers_slow    = 7;
   } // namespace exit_status
 
   /**

@@ -19,12 +19,17 @@ namespace signorini
   bool
   ContactProblem<dim>::update_rule(const ContactNode<dim> &node) const
   {
-    // Penalty: the penetrating nodes. Active set: the primal-dual rule
-    // pressure - c x gap > 0. Either way, a gap counts as negative only
-    // beyond round-off, so that a node grazing the obstacle does not flip.
+    // Penalty: the penetrating nodes. Augmented Lagrangian: where the
+    // pressure multiplier - gap / epsilon is positive. Active set: the
+    // primal-dual rule pressure - c x gap > 0. Each way, a gap counts as
+    // negative only beyond round-off, so that a node grazing the obstacle
+    // does not flip.
     const double gap = deformed_gap(node) + touching_tolerance;
     if (parameters.contact.method == ContactParameters::Method::penalty)
       return gap < 0;
+    if (parameters.contact.method ==
+        ContactParameters::Method::augmented_lagrangian)
+      return gap < penalty_parameter * node.multiplier;
     return pressure(node.dofs[dim - 1]) - complementarity_constant * gap > 0;
   }
 
@@ -81,9 +86,11 @@ namespace signorini
     // nodal force lambda_i; the pressure is lambda_i / m_i. The nonlinear
     // residual combines the force balance at all other free dofs with the
     // complementarity function of the method at the contact dofs.
+    const auto method = parameters.contact.method;
     const bool penalty =
-      parameters.contact.method == ContactParameters::Method::penalty;
-    const double epsilon = parameters.contact.penalty_parameter;
+      method == ContactParameters::Method::penalty ||
+      method == ContactParameters::Method::augmented_lagrangian;
+    const double epsilon = penalty_parameter;
 
     TrilinosWrappers::MPI::Vector owned_pressure(locally_owned_dofs,
                                                  mpi_communicator);
@@ -97,10 +104,10 @@ namespace signorini
           const double p      = node.mass > 0 ? lambda / node.mass : 0.;
           const double s      = deformed_gap(node);
           const double expected =
-            parameters.contact.method == ContactParameters::Method::none ?
+            method == ContactParameters::Method::none ?
               lambda :
             penalty ?
-              node.mass * std::max(0., -s) / epsilon :
+              node.mass * std::max(0., node.multiplier - s / epsilon) :
               node.mass * std::max(0., p - complementarity_constant * s);
           owned_pressure(i) = p;
           balance(i)        = 0.;
@@ -117,6 +124,28 @@ namespace signorini
     const double scale = load.l2_norm() + std::sqrt(contact_force);
     return std::sqrt(balance_norm * balance_norm + complementarity) /
            (scale > 0 ? scale : 1.);
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::update_multipliers()
+  {
+    // Uzawa: the multiplier takes the pressure of the inner solution,
+    // [lambda - gap / epsilon]_+, which differs from lambda by the
+    // penetration / epsilon.
+    double change = 0., largest = 0.;
+    for (auto &node : contact_nodes)
+      if (node.owned)
+        {
+          const double p =
+            std::max(0., static_cast<double>(pressure(node.dofs[dim - 1])));
+          change          = std::max(change, std::abs(p - node.multiplier));
+          largest         = std::max(largest, p);
+          node.multiplier = p;
+        }
+    change  = Utilities::MPI::max(change, mpi_communicator);
+    largest = Utilities::MPI::max(largest, mpi_communicator);
+    return largest > 0 ? change / largest : 0.;
   }
 
   template <int dim>
@@ -176,6 +205,10 @@ namespace signorini
   ContactProblem<2>::compute_contact_forces();
   template double
   ContactProblem<3>::compute_contact_forces();
+  template double
+  ContactProblem<2>::update_multipliers();
+  template double
+  ContactProblem<3>::update_multipliers();
   template unsigned int
   ContactProblem<2>::update_active_set();
   template unsigned int

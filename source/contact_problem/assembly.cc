@@ -82,22 +82,52 @@ namespace signorini
     const bool         active_set_method =
       parameters.contact.method == ContactParameters::Method::active_set;
     const bool penalty_method =
-      parameters.contact.method == ContactParameters::Method::penalty;
+      parameters.contact.method == ContactParameters::Method::penalty ||
+      parameters.contact.method ==
+        ContactParameters::Method::augmented_lagrangian;
 
-    // Active contact nodes sit on the obstacle: u_n = -gap.
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    if (active_set_method)
-      for (const auto &node : contact_nodes)
-        if (node.active)
-          {
-            constraints.add_line(node.dofs[dim - 1]);
-            constraints.set_inhomogeneity(node.dofs[dim - 1], -node.gap);
-          }
-    constraints.merge(fixed_constraints,
-                      AffineConstraints<double>::left_object_wins);
-    constraints.close();
+    // The matrix depends on the active set (and on epsilon): while they
+    // stay, it and its factorisation are kept, and only the augmented
+    // Lagrangian multipliers change the right-hand side.
+    const auto key = std::make_pair(active_set_signature(), penalty_parameter);
+    matrix_changed = !matrix_assembled || key != assembled_for;
+    if (matrix_changed)
+      {
+        // Active contact nodes sit on the obstacle: u_n = -gap.
+        constraints.clear();
+        constraints.reinit(locally_relevant_dofs);
+        if (active_set_method)
+          for (const auto &node : contact_nodes)
+            if (node.active)
+              {
+                constraints.add_line(node.dofs[dim - 1]);
+                constraints.set_inhomogeneity(node.dofs[dim - 1], -node.gap);
+              }
+        constraints.merge(fixed_constraints,
+                          AffineConstraints<double>::left_object_wins);
+        constraints.close();
+        assemble_matrix(penalty_method);
+        base_rhs         = system_rhs;
+        assembled_for    = key;
+        matrix_assembled = true;
+      }
+    else
+      system_rhs = base_rhs;
 
+    if (parameters.contact.method ==
+        ContactParameters::Method::augmented_lagrangian)
+      {
+        for (const auto &node : contact_nodes)
+          if (node.owned && node.active)
+            system_rhs(node.dofs[dim - 1]) += node.mass * node.multiplier;
+        system_rhs.compress(VectorOperation::add);
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_matrix(const bool penalty_method)
+  {
     system_matrix = 0;
     system_rhs    = 0;
     FEValues<dim>      fe_values(*mapping,
@@ -139,10 +169,12 @@ namespace signorini
     system_rhs += load;
 
     // Penalty: the obstacle pushes back with p = penetration / epsilon on
-    // the penetrating nodes, p_i m_i = -(u_i + gap_i) m_i / epsilon.
+    // the penetrating nodes, p_i m_i = -(u_i + gap_i) m_i / epsilon; the
+    // augmented Lagrangian adds the multiplier, p = lambda - (u + gap) / eps
+    // (its share is added by the caller).
     if (penalty_method)
       {
-        const double epsilon = parameters.contact.penalty_parameter;
+        const double epsilon = penalty_parameter;
         for (const auto &node : contact_nodes)
           if (node.owned && node.active)
             {
@@ -231,6 +263,10 @@ namespace signorini
   ContactProblem<2>::assemble_newton_system();
   template void
   ContactProblem<3>::assemble_newton_system();
+  template void
+  ContactProblem<2>::assemble_matrix(bool);
+  template void
+  ContactProblem<3>::assemble_matrix(bool);
   template void
   ContactProblem<2>::assemble_residual();
   template void

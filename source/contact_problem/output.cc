@@ -115,10 +115,12 @@ namespace signorini
   ContactProblem<dim>::record_statistics(const unsigned int cycle)
   {
     CycleStatistics<dim> row;
-    row.cycle      = cycle;
-    row.cells      = triangulation->n_global_active_cells();
-    row.dofs       = dof_handler.n_dofs();
-    row.iterations = newton_iterations;
+    row.cycle              = cycle;
+    row.cells              = triangulation->n_global_active_cells();
+    row.dofs               = dof_handler.n_dofs();
+    row.iterations         = newton_iterations;
+    row.multiplier_updates = multiplier_updates;
+    row.penalty_parameter  = penalty_parameter;
 
     const bool contact =
       parameters.contact.method != ContactParameters::Method::none;
@@ -173,6 +175,10 @@ namespace signorini
     evaluate_balance_and_energy(row);
     cycle_statistics.push_back(row);
 
+    if (parameters.contact.method ==
+        ContactParameters::Method::augmented_lagrangian)
+      pcout << "   " << row.multiplier_updates << " multiplier updates, "
+            << "penalty parameter " << row.penalty_parameter << std::endl;
     pcout << "   " << row.iterations << " iterations, " << row.active_nodes
           << " active nodes, contact force " << row.contact_force[dim - 1]
           << ", max penetration " << row.max_penetration << std::endl;
@@ -202,10 +208,22 @@ namespace signorini
     void
     write_statistics(std::ostream                            &out,
                      const std::vector<CycleStatistics<dim>> &rows,
-                     const Reference<dim>                    &reference)
+                     const Reference<dim>                    &reference,
+                     const ContactParameters::Method          method)
     {
       const char *axes = "xyz";
+      // The penalty in use (a remedy may change it), and the multiplier
+      // updates of the augmented Lagrangian method.
+      const bool penalty =
+        method == ContactParameters::Method::penalty ||
+        method == ContactParameters::Method::augmented_lagrangian;
+      const bool lagrangian =
+        method == ContactParameters::Method::augmented_lagrangian;
       out << "cycle,cells,dofs,iterations,active_set";
+      if (lagrangian)
+        out << ",multiplier_updates";
+      if (penalty)
+        out << ",penalty_parameter";
       for (unsigned int d = 0; d < dim; ++d)
         out << ",contact_force_" << axes[d];
       out << ",max_penetration,estimated_error,max_pressure,contact_width";
@@ -234,6 +252,10 @@ namespace signorini
         {
           out << row.cycle << ',' << row.cells << ',' << row.dofs << ','
               << row.iterations << ',' << row.active_nodes;
+          if (lagrangian)
+            out << ',' << row.multiplier_updates;
+          if (penalty)
+            put(row.penalty_parameter);
           for (unsigned int d = 0; d < dim; ++d)
             put(row.contact_force[d]);
           put(row.max_penetration);
@@ -332,7 +354,10 @@ namespace signorini
         DataOutBase::write_pvd_record(out, written_cycles);
       });
       write_atomically(directory + "/statistics.csv", [&](std::ostream &out) {
-        write_statistics(out, cycle_statistics, parameters.reference);
+        write_statistics(out,
+                         cycle_statistics,
+                         parameters.reference,
+                         parameters.contact.method);
       });
     });
     if (parameters.output.contact_pressure_table)

@@ -34,6 +34,7 @@ namespace signorini
             parameters.output.print_timings ? TimerOutput::summary :
                                               TimerOutput::never,
             TimerOutput::wall_times)
+    , linear_system_solver(parameters.linear_solver)
   {
   }
 
@@ -158,8 +159,11 @@ namespace signorini
                                       mpi_communicator));
     sparsity.compress();
     system_matrix.reinit(sparsity);
+    linear_system_solver.reset();
+    matrix_assembled = false;
 
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    base_rhs.reinit(locally_owned_dofs, mpi_communicator);
     residual.reinit(locally_owned_dofs, mpi_communicator);
     load.reinit(locally_owned_dofs, mpi_communicator);
     solution.reinit(locally_owned_dofs,

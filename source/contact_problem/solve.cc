@@ -18,10 +18,9 @@ namespace signorini
                                               mpi_communicator);
     distributed = solution; // a warm start for the iterative solver
     constraints.set_zero(distributed);
-    parameters.linear_solver.solve(system_matrix,
-                                   distributed,
-                                   system_rhs,
-                                   rigid_body_modes);
+    if (matrix_changed)
+      linear_system_solver.prepare(system_matrix, rigid_body_modes);
+    linear_system_solver.solve(system_matrix, distributed, system_rhs);
     constraints.distribute(distributed);
     solution = distributed;
   }
@@ -31,8 +30,19 @@ namespace signorini
     std::string
     method_name(const ContactParameters::Method method)
     {
-      return method == ContactParameters::Method::penalty ? "penalty" :
-                                                            "active set";
+      return method == ContactParameters::Method::penalty ?
+               "penalty" :
+             method == ContactParameters::Method::augmented_lagrangian ?
+               "augmented lagrangian" :
+               "active set";
+    }
+
+    std::string
+    number(const double x)
+    {
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.3g", x);
+      return text;
     }
   } // namespace
 
@@ -42,6 +52,8 @@ namespace signorini
   {
     assemble_load();
     const auto &contact = parameters.contact;
+    newton_iterations   = 0;
+    multiplier_updates  = 0;
     if (contact.method == ContactParameters::Method::none)
       {
         for (auto &node : contact_nodes)
@@ -53,7 +65,50 @@ namespace signorini
         return;
       }
 
+    penalty_parameter = contact.penalty_parameter > 0 ?
+                          contact.penalty_parameter :
+                          1. / complementarity_constant;
+    if (contact.method != ContactParameters::Method::augmented_lagrangian)
+      {
+        initialize_active_set();
+        solve_newton(cycle);
+        return;
+      }
+
+    // Augmented Lagrangian: the multipliers start from the previous cycle's
+    // pressure (zero on cycle 0).
+    for (auto &node : contact_nodes)
+      if (node.owned)
+        node.multiplier =
+          std::max(0., static_cast<double>(pressure(node.dofs[dim - 1])));
     initialize_active_set();
+    for (;;)
+      {
+        solve_newton(cycle);
+        const double change = update_multipliers();
+        ++multiplier_updates;
+        if (parameters.output.verbose)
+          pcout << "   multiplier update " << multiplier_updates
+                << ": relative change " << number(change) << std::endl;
+        if (change <= contact.multiplier_tolerance)
+          return;
+        if (multiplier_updates >= contact.max_updates)
+          throw SolverFailure(
+            exit_status::multipliers_slow,
+            "contact solver (augmented lagrangian): the multipliers still "
+            "change by " +
+              number(change) + " after " + std::to_string(multiplier_updates) +
+              " updates on cycle " + std::to_string(cycle) +
+              " (Contact/Maximum updates; a smaller Contact/Penalty "
+              "parameter converges faster)");
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_newton(const unsigned int cycle)
+  {
+    const auto &contact = parameters.contact;
     std::vector<std::pair<unsigned int, std::size_t>> visited = {
       active_set_signature()};
     double       previous_residual = 0.;
@@ -64,6 +119,7 @@ namespace signorini
         const bool contact_free = visited.back().first == 0;
         assemble_newton_system();
         solve();
+        ++newton_iterations;
         const double       residual_norm = compute_contact_forces();
         const unsigned int changes =
           contact_free ? activate_first_contact() : update_active_set();
@@ -88,10 +144,7 @@ namespace signorini
                                 std::to_string(cycle) +
                                 " (is the body held against rigid motion?)");
         if (changes == 0 && residual_norm < contact.tolerance)
-          {
-            newton_iterations = iteration;
-            return;
-          }
+          return;
         // With the active set unchanged, the next step solves the same linear
         // system again. A residual that did not fall since the last step
         // is the round-off floor of a fine mesh if it is near the tolerance,
@@ -100,17 +153,12 @@ namespace signorini
             residual_norm > 0.5 * previous_residual)
           {
             if (residual_norm < 100. * contact.tolerance)
-              {
-                newton_iterations = iteration;
-                return;
-              }
-            char value[32];
-            std::snprintf(value, sizeof(value), "%.3e", residual_norm);
+              return;
             throw SolverFailure(
-              exit_status::contact_no_converge,
+              exit_status::contact_stalled,
               "contact solver (" + method_name(contact.method) +
                 ") stalled on cycle " + std::to_string(cycle) +
-                " at residual " + value +
+                " at residual " + number(residual_norm) +
                 " with an unchanged active set (is the body held against "
                 "rigid motion? is Linear solver/Tolerance too loose?)");
           }
@@ -144,4 +192,8 @@ namespace signorini
   ContactProblem<2>::solve_contact_problem(unsigned int);
   template void
   ContactProblem<3>::solve_contact_problem(unsigned int);
+  template void
+  ContactProblem<2>::solve_newton(unsigned int);
+  template void
+  ContactProblem<3>::solve_newton(unsigned int);
 } // namespace signorini
