@@ -9,17 +9,16 @@
 
 Runs go to build/validation/. Needs gnuplot and gmsh (installed if missing).
 """
-import csv
 import math
 import os
-import re
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+from common import DOC, ROOT, gnuplot, replace_sections, table  # noqa: E402
+
 WORK = os.path.join(ROOT, "build", "validation")
-DOC = os.path.join(ROOT, "doc")
-SIGNORINI = os.path.join(ROOT, "build", "signorini")
 
 # The default scene's potential energy J(u) [N mm per mm], extrapolated from
 # an overkill run: `scripts/validation --overkill` prints how it is made.
@@ -31,43 +30,9 @@ HERTZ_A = 2 * math.sqrt(10 * 1 * (1 - 0.3**2) / (math.pi * 1000))
 HERTZ_P0 = 2 * 10 / (math.pi * HERTZ_A)
 
 
-def ensure_tools():
-    subprocess.run([os.path.join(ROOT, "scripts", "build")], check=True,
-                   stdout=sys.stderr)
-    missing = [p for p, tool in (("gnuplot-nox", "gnuplot"), ("gmsh", "gmsh"))
-               if subprocess.run(["sh", "-c", "command -v " + tool],
-                                 stdout=subprocess.DEVNULL).returncode]
-    if missing:
-        env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
-        subprocess.run(["apt-get", "update", "-qq"], check=True, env=env)
-        subprocess.run(["apt-get", "install", "-y", "-qq",
-                        "--no-install-recommends"] + missing, check=True,
-                       env=env, stdout=subprocess.DEVNULL)
-
-
 def run(name, base, settings):
-    """Runs `base` (a .prm) with `settings` {subsection: {entry: value}}
-    overriding it; returns the rows of statistics.csv as dicts of floats."""
-    folder = os.path.join(WORK, name)
-    os.makedirs(folder, exist_ok=True)
-    settings = dict(settings)
-    output = dict(settings.get("Output", {}))
-    output.update({"Directory": folder, "Print timings": "false",
-                   "Verbose": "false"})
-    settings["Output"] = output
-    lines = ["include " + os.path.join(ROOT, base)]
-    for section, entries in settings.items():
-        lines.append("subsection " + section)
-        lines += ["  set %s = %s" % item for item in entries.items()]
-        lines.append("end")
-    prm = os.path.join(WORK, name + ".prm")
-    with open(prm, "w") as out:
-        out.write("\n".join(lines) + "\n")
-    print("  " + name, file=sys.stderr)
-    subprocess.run([SIGNORINI, prm], check=True, stdout=subprocess.DEVNULL)
-    with open(os.path.join(folder, "statistics.csv")) as table:
-        return [{k: float(v) for k, v in row.items()}
-                for row in csv.DictReader(table)]
+    """The rows of statistics.csv of `base` run with `settings`."""
+    return common.run(WORK, name, base, settings).rows
 
 
 def slope(rows, column, first=0):
@@ -83,23 +48,7 @@ def slope(rows, column, first=0):
 
 
 def write_data(name, rows, columns):
-    path = os.path.join(WORK, name + ".dat")
-    with open(path, "w") as out:
-        for row in rows:
-            out.write(" ".join("%.10g" % row[c] for c in columns) + "\n")
-    return path
-
-
-def gnuplot(script):
-    subprocess.run(["gnuplot"], input=script, text=True, check=True)
-
-
-def table(header, rows):
-    text = "| " + " | ".join(header) + " |\n"
-    text += "|" + "---|" * len(header) + "\n"
-    for row in rows:
-        text += "| " + " | ".join(row) + " |\n"
-    return text
+    return common.write_data(WORK, name, rows, columns)
 
 
 def hertz():
@@ -303,22 +252,8 @@ def overkill():
     print("fitted J(u_h) = J + C/N: J = %.8f (C = %.3g)" % ((sy - c * sx) / n, c))
 
 
-def replace_sections(path, sections):
-    with open(path) as f:
-        text = f.read()
-    for name, body in sections.items():
-        pattern = re.compile(r"(<!-- begin %s -->\n).*?(<!-- end %s -->)" %
-                             (re.escape(name), re.escape(name)), re.S)
-        if not pattern.search(text):
-            sys.exit("scripts/validation: %s has no section '%s'" % (path, name))
-        text = pattern.sub(lambda m: m.group(1) + body + m.group(2), text)
-    with open(path + ".tmp", "w") as f:
-        f.write(text)
-    os.replace(path + ".tmp", path)
-
-
 def main():
-    ensure_tools()
+    common.ensure_tools((("gnuplot-nox", "gnuplot"), ("gmsh", "gmsh")))
     os.makedirs(WORK, exist_ok=True)
     if "--overkill" in sys.argv[1:]:
         overkill()

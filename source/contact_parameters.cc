@@ -28,7 +28,8 @@ namespace signorini
       "penetration is epsilon x pressure; smaller epsilon, smaller "
       "penetration and a stiffer system. Augmented lagrangian: the "
       "multipliers converge by a factor of about r / (1 + r) per update, "
-      "r = epsilon x E / h_min. 0: h_min / E of each cycle's mesh (r = 1).");
+      "r = epsilon x E / h_min. 0: h_min / (10 E) of each cycle's mesh "
+      "(r = 0.1).");
     prm.declare_entry("Multiplier tolerance",
                       "1e-8",
                       Patterns::Double(0.),

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <signorini/file_output.h>
 
 #include <cstdio>
@@ -27,5 +29,24 @@ namespace signorini
         std::remove(temporary.c_str());
         throw std::runtime_error("cannot write '" + path + "'");
       }
+  }
+
+  void
+  write_collectively(const MPI_Comm               mpi_communicator,
+                     const std::function<void()> &write)
+  {
+    std::string error;
+    try
+      {
+        write();
+      }
+    catch (const std::exception &failure)
+      {
+        error = failure.what();
+      }
+    const unsigned int failed = error.empty() ? 0 : 1;
+    if (dealii::Utilities::MPI::max(failed, mpi_communicator) > 0)
+      throw std::runtime_error(
+        failed ? error : "another process could not write its output");
   }
 } // namespace signorini

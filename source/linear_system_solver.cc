@@ -10,6 +10,7 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
+#include <cstdio>
 
 namespace signorini
 {
@@ -18,13 +19,13 @@ namespace signorini
   namespace
   {
     const char *singular = "linear solver failed: the system is singular or "
-                           "the solver broke down (is the body held against "
-                           "rigid motion?)";
+                           "the solver broke down";
   }
 
   LinearSystemSolver::LinearSystemSolver(const LinearSolver &parameters)
     : parameters(parameters)
-  {}
+  {
+  }
 
   LinearSystemSolver::~LinearSystemSolver() = default;
 
@@ -108,11 +109,15 @@ namespace signorini
         matrix.vmult(residual, solution);
         residual -= rhs;
         const double error = residual.l2_norm();
+        char         relative[32];
+        std::snprintf(relative,
+                      sizeof(relative),
+                      "%.3g",
+                      error / rhs.l2_norm());
         if (!std::isfinite(error) || error > 1e-6 * rhs.l2_norm())
           throw SolverFailure(exit_status::linear_solver,
-                              "linear solver failed: the system is "
-                              "singular (is the body held against rigid "
-                              "motion?)");
+                              "linear solver failed: the system is singular "
+                              "or too ill-conditioned");
         return 1;
       }
 

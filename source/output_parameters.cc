@@ -38,6 +38,16 @@ namespace signorini
                       "true",
                       Patterns::Bool(),
                       "Print the timer summary at the end of the run.");
+    prm.declare_entry(
+      "Timing table",
+      "false",
+      Patterns::Bool(),
+      "Write timings.csv, a row per cycle: the wall time [s] of the contact "
+      "solve, of one linear elasticity solve on the same mesh with the same "
+      "linear solver (the Newton system of the converged active set, "
+      "assembled and solved anew after the cycle for this comparison), their "
+      "ratio, the run time so far [s] without output "
+      "and this comparison, and the peak memory [MB] of all processes.");
     prm.leave_subsection();
   }
 
@@ -54,6 +64,7 @@ namespace signorini
     verbose                = prm.get_bool("Verbose");
     print_timings          = prm.get_bool("Print timings");
     contact_pressure_table = prm.get_bool("Contact pressure table");
+    timing_table           = prm.get_bool("Timing table");
     prm.leave_subsection();
   }
 

@@ -33,7 +33,7 @@ namespace signorini
     };
 
     Method method = Method::active_set;
-    /** epsilon [mm/MPa]; 0: h_min / E of each cycle's mesh. */
+    /** epsilon [mm/MPa]; 0: h_min / (10 E) of each cycle's mesh. */
     double penalty_parameter = 0.;
     /** Relative change of the multipliers at convergence. */
     double       multiplier_tolerance = 1e-8;

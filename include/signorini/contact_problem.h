@@ -61,6 +61,9 @@ namespace signorini
     unsigned int                    iterations;
     /** Augmented Lagrangian multiplier updates. */
     unsigned int multiplier_updates = 0;
+    /** Active set cycle breaking: update by the signs of pressure and gap
+     * alone, for the rest of the cycle. */
+    bool sign_rule = false;
     /** The penalty parameter epsilon in use at the end [mm/MPa]. */
     double                 penalty_parameter = 0.;
     unsigned int           active_nodes;
@@ -92,6 +95,27 @@ namespace signorini
      * (NaN if none). */
     double                              pressure_error = 0.;
     std::vector<dealii::Tensor<1, dim>> probes;
+  };
+
+  /** "active set", "penalty" or "augmented lagrangian", for messages. */
+  std::string
+  method_name(const ContactParameters::Method method);
+  /** @p x with three significant digits. */
+  std::string
+  number(const double x);
+
+  /** The costs of one cycle, one row of timings.csv. */
+  struct CycleTimings
+  {
+    unsigned int cycle;
+    /** Wall time of the contact solve [s]. */
+    double contact_solve = 0.;
+    /** Wall time of one linear elasticity solve on the same mesh [s]. */
+    double linear_solve = 0.;
+    /** Wall time since the start, without output and linear_solve [s]. */
+    double run_time = 0.;
+    /** Peak resident memory, summed over the processes [MB]. */
+    double peak_memory = 0.;
   };
 
   /**
@@ -178,8 +202,15 @@ namespace signorini
     // solve.cc
     void
     solve();
+
+    // methods.cc
+    /** One cycle's contact problem by the chosen method, with its remedies. */
     void
     solve_contact_problem(const unsigned int cycle);
+    void
+    solve_penalty(const unsigned int cycle);
+    void
+    solve_augmented_lagrangian(const unsigned int cycle);
     /** Semismooth Newton iterations until the active set settles; for the
      * augmented Lagrangian method, with the multipliers fixed. */
     void
@@ -202,6 +233,16 @@ namespace signorini
     evaluate_balance_and_energy(CycleStatistics<dim> &row) const;
     void
     write_contact_pressure_table(const unsigned int cycle) const;
+
+    // benchmark.cc
+    /** Wall time of assembling and solving the Newton system of the
+     * converged active set anew, with the same linear solver [s]: one linear
+     * elasticity solve on this mesh. Leaves the solution as it was. */
+    double
+    time_linear_solve();
+    /** Adds this cycle's row to timings.csv. */
+    void
+    write_timings(const CycleTimings &row);
 
     // output.cc
     void
@@ -268,12 +309,16 @@ namespace signorini
      * this cycle [mm/MPa]. */
     double       penalty_parameter  = 0.;
     unsigned int multiplier_updates = 0;
+    /** Active set cycle breaking: update by the signs of pressure and gap
+     * alone, for the rest of the cycle. */
+    bool sign_rule = false;
     /** Gaps below this count as touching: round-off in the body's size. */
     double                touching_tolerance = 0.;
     unsigned int          newton_iterations  = 0;
     dealii::Vector<float> estimated_error_per_cell;
 
     std::vector<CycleStatistics<dim>>           cycle_statistics;
+    std::vector<CycleTimings>                   cycle_timings;
     std::vector<std::pair<double, std::string>> written_cycles;
   };
 } // namespace signorini

@@ -2,6 +2,7 @@
 #define signorini_file_output_h
 
 #include <functional>
+#include <mpi.h>
 #include <ostream>
 #include <string>
 
@@ -16,6 +17,15 @@ namespace signorini
   void
   write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &write);
+
+  /**
+   * Runs @p write on every process and throws on every process if it
+   * failed on any, so that no process is left waiting for one that gave up.
+   * Also a barrier: what one process wrote is complete afterwards.
+   */
+  void
+  write_collectively(const MPI_Comm               mpi_communicator,
+                     const std::function<void()> &write);
 } // namespace signorini
 
 #endif

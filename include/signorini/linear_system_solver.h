@@ -54,9 +54,9 @@ namespace signorini
           const dealii::TrilinosWrappers::MPI::Vector  &rhs);
 
   private:
-    const LinearSolver                                 &parameters;
-    std::unique_ptr<Epetra_LinearProblem>               problem;
-    std::unique_ptr<Amesos_BaseSolver>                  direct;
+    const LinearSolver                                        &parameters;
+    std::unique_ptr<Epetra_LinearProblem>                      problem;
+    std::unique_ptr<Amesos_BaseSolver>                         direct;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
   };
 } // namespace signorini

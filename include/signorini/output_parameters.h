@@ -19,6 +19,8 @@ namespace signorini
     bool                            print_timings = true;
     /** Write contact_pressure-CC.csv for every cycle. */
     bool contact_pressure_table = false;
+    /** Write timings.csv, with a linear solve per cycle to compare with. */
+    bool timing_table = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -26,10 +26,12 @@ namespace signorini
     // does not flip.
     const double gap = deformed_gap(node) + touching_tolerance;
     if (parameters.contact.method == ContactParameters::Method::penalty)
-      return gap < 0;
+      return (sign_rule ? deformed_gap(node) : gap) < 0;
     if (parameters.contact.method ==
         ContactParameters::Method::augmented_lagrangian)
       return gap < penalty_parameter * node.multiplier;
+    if (sign_rule)
+      return node.active ? pressure(node.dofs[dim - 1]) > 0 : gap < 0;
     return pressure(node.dofs[dim - 1]) - complementarity_constant * gap > 0;
   }
 

@@ -19,33 +19,6 @@ namespace signorini
 {
   using namespace dealii;
 
-  namespace
-  {
-    /**
-     * Runs @p write on every process and throws on every process if it
-     * failed on any, so that no process is left waiting for one that gave up.
-     * Also a barrier: what one process wrote is complete afterwards.
-     */
-    void
-    write_collectively(const MPI_Comm               mpi_communicator,
-                       const std::function<void()> &write)
-    {
-      std::string error;
-      try
-        {
-          write();
-        }
-      catch (const std::exception &failure)
-        {
-          error = failure.what();
-        }
-      const unsigned int failed = error.empty() ? 0 : 1;
-      if (Utilities::MPI::max(failed, mpi_communicator) > 0)
-        throw std::runtime_error(
-          failed ? error : "another process could not write its output");
-    }
-  } // namespace
-
   template <int dim>
   void
   ContactProblem<dim>::write_obstacle_and_parameters() const

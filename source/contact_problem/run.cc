@@ -1,5 +1,7 @@
 #include <signorini/contact_problem.h>
 
+#include <chrono>
+
 namespace signorini
 {
   using namespace dealii;
@@ -24,21 +26,42 @@ namespace signorini
   void
   ContactProblem<dim>::run_cycles()
   {
+    // Wall time on the slowest process.
+    const auto now = [this]() {
+      MPI_Barrier(mpi_communicator);
+      return std::chrono::duration<double>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+    };
+    double run_time = 0., start = now();
     make_grid();
     setup_system();
+    run_time += now() - start;
     write_obstacle_and_parameters();
     for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
          ++cycle)
       {
+        CycleTimings timings;
+        timings.cycle = cycle;
+        start         = now();
         if (cycle > 0)
           refine_grid();
         pcout << "Cycle " << cycle << ": "
               << triangulation->n_global_active_cells() << " cells, "
               << dof_handler.n_dofs() << " dofs" << std::endl;
+        const double solve_start = now();
         solve_contact_problem(cycle);
+        timings.contact_solve = now() - solve_start;
         estimate_error();
+        run_time += now() - start;
+        timings.run_time = run_time;
         record_statistics(cycle);
         output_results(cycle);
+        if (parameters.output.timing_table)
+          {
+            timings.linear_solve = time_linear_solve();
+            write_timings(timings);
+          }
       }
   }
 

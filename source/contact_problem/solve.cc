@@ -18,90 +18,45 @@ namespace signorini
                                               mpi_communicator);
     distributed = solution; // a warm start for the iterative solver
     constraints.set_zero(distributed);
-    if (matrix_changed)
-      linear_system_solver.prepare(system_matrix, rigid_body_modes);
-    linear_system_solver.solve(system_matrix, distributed, system_rhs);
+    try
+      {
+        if (matrix_changed)
+          linear_system_solver.prepare(system_matrix, rigid_body_modes);
+        linear_system_solver.solve(system_matrix, distributed, system_rhs);
+      }
+    catch (const SolverFailure &failure)
+      {
+        const auto method = parameters.contact.method;
+        throw SolverFailure(
+          failure.status,
+          std::string(failure.what()) +
+            " (is the body held against rigid motion?" +
+            (method == ContactParameters::Method::penalty ||
+                 method == ContactParameters::Method::augmented_lagrangian ?
+               " is Contact/Penalty parameter too small?" :
+               "") +
+            ")");
+      }
     constraints.distribute(distributed);
     solution = distributed;
   }
 
-  namespace
+  std::string
+  method_name(const ContactParameters::Method method)
   {
-    std::string
-    method_name(const ContactParameters::Method method)
-    {
-      return method == ContactParameters::Method::penalty ?
-               "penalty" :
-             method == ContactParameters::Method::augmented_lagrangian ?
-               "augmented lagrangian" :
-               "active set";
-    }
+    return method == ContactParameters::Method::penalty ?
+             "penalty" :
+           method == ContactParameters::Method::augmented_lagrangian ?
+             "augmented lagrangian" :
+             "active set";
+  }
 
-    std::string
-    number(const double x)
-    {
-      char text[32];
-      std::snprintf(text, sizeof(text), "%.3g", x);
-      return text;
-    }
-  } // namespace
-
-  template <int dim>
-  void
-  ContactProblem<dim>::solve_contact_problem(const unsigned int cycle)
+  std::string
+  number(const double x)
   {
-    assemble_load();
-    const auto &contact = parameters.contact;
-    newton_iterations   = 0;
-    multiplier_updates  = 0;
-    if (contact.method == ContactParameters::Method::none)
-      {
-        for (auto &node : contact_nodes)
-          node.active = false;
-        assemble_newton_system();
-        solve();
-        compute_contact_forces();
-        newton_iterations = 1;
-        return;
-      }
-
-    penalty_parameter = contact.penalty_parameter > 0 ?
-                          contact.penalty_parameter :
-                          1. / complementarity_constant;
-    if (contact.method != ContactParameters::Method::augmented_lagrangian)
-      {
-        initialize_active_set();
-        solve_newton(cycle);
-        return;
-      }
-
-    // Augmented Lagrangian: the multipliers start from the previous cycle's
-    // pressure (zero on cycle 0).
-    for (auto &node : contact_nodes)
-      if (node.owned)
-        node.multiplier =
-          std::max(0., static_cast<double>(pressure(node.dofs[dim - 1])));
-    initialize_active_set();
-    for (;;)
-      {
-        solve_newton(cycle);
-        const double change = update_multipliers();
-        ++multiplier_updates;
-        if (parameters.output.verbose)
-          pcout << "   multiplier update " << multiplier_updates
-                << ": relative change " << number(change) << std::endl;
-        if (change <= contact.multiplier_tolerance)
-          return;
-        if (multiplier_updates >= contact.max_updates)
-          throw SolverFailure(
-            exit_status::multipliers_slow,
-            "contact solver (augmented lagrangian): the multipliers still "
-            "change by " +
-              number(change) + " after " + std::to_string(multiplier_updates) +
-              " updates on cycle " + std::to_string(cycle) +
-              " (Contact/Maximum updates; a smaller Contact/Penalty "
-              "parameter converges faster)");
-      }
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.3g", x);
+    return text;
   }
 
   template <int dim>
@@ -159,16 +114,47 @@ namespace signorini
               "contact solver (" + method_name(contact.method) +
                 ") stalled on cycle " + std::to_string(cycle) +
                 " at residual " + number(residual_norm) +
-                " with an unchanged active set (is the body held against "
-                "rigid motion? is Linear solver/Tolerance too loose?)");
+                " with an unchanged active set (" +
+                (contact.method == ContactParameters::Method::penalty ?
+                   "the round-off of a stiff penalty: is Contact/Penalty "
+                   "parameter too small? " :
+                   "") +
+                "is the body held against rigid motion? is Linear "
+                "solver/Tolerance too loose?)");
           }
         previous_residual = residual_norm;
         previous_changes  = changes;
         if (changes > 0 &&
             std::find(visited.begin(), visited.end(), signature) !=
+              visited.end() &&
+            contact.method != ContactParameters::Method::augmented_lagrangian &&
+            contact.remedies && !sign_rule)
+          {
+            // Cycle breaking. Active set: the rule pressure - c x gap > 0
+            // with a c that lets round-off decide (too small: the noise of
+            // the pressure; too large: the touching tolerance) gives way to
+            // the signs alone. Penalty: a node whose penetration epsilon x
+            // pressure is below the touching tolerance flips on every step;
+            // it is penetrating if its gap is negative at all.
+            sign_rule = true;
+            pcout << "   remedy: the active set returned to an earlier one on "
+                     "iteration "
+                  << iteration << "; cycle broken by "
+                  << (contact.method == ContactParameters::Method::penalty ?
+                        "counting every negative gap as penetrating" :
+                        "the c-free update (release where the pressure is "
+                        "negative, add where the gap is)")
+                  << std::endl;
+            update_active_set();
+            visited = {active_set_signature()};
+            continue;
+          }
+        if (changes > 0 &&
+            std::find(visited.begin(), visited.end(), signature) !=
               visited.end())
           throw SolverFailure(exit_status::active_set_cycling,
                               "contact solver (" + method_name(contact.method) +
+                                (sign_rule ? ", cycle breaking applied" : "") +
                                 ") is cycling on cycle " +
                                 std::to_string(cycle) + ": iteration " +
                                 std::to_string(iteration) +
@@ -188,10 +174,6 @@ namespace signorini
   ContactProblem<2>::solve();
   template void
   ContactProblem<3>::solve();
-  template void
-  ContactProblem<2>::solve_contact_problem(unsigned int);
-  template void
-  ContactProblem<3>::solve_contact_problem(unsigned int);
   template void
   ContactProblem<2>::solve_newton(unsigned int);
   template void

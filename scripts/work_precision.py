@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""Speed against accuracy: sweeps the contact methods (active set; penalty
+at several epsilon; augmented Lagrangian) x refinement (global, Kelly) x
+cycles on the Hertz and cantilever scenes, records the error (Hertz: peak
+pressure p0; cantilever: energy norm against the overkill reference), the
+penetration and the run time (wall time without output, from timings.csv),
+and draws error against time, log-log, one curve per method and refinement.
+
+    scripts/work-precision           the sweep and the stability map:
+                                     doc/work-precision.md, .png and
+                                     doc/stability.md (about N minutes)
+    scripts/work-precision --quick   a small sweep (under two minutes) into
+                                     build/work-precision-quick/, checked;
+                                     what the ctest runs
+
+Runs go to build/work-precision/ (or build/work-precision-quick/).
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+import stability  # noqa: E402
+
+# The cantilever's potential energy from the overkill run (doc/validation.md).
+REFERENCE_ENERGY = "-6.8812213"
+
+# scene: (title, .prm, error column, extra settings, penalty epsilons
+# [mm/MPa], cycles for kelly and global, cycles in quick mode)
+SCENES = {
+    "hertz": ("Hertz cylinder: peak pressure error", "prm/hertz_cylinder.prm",
+              "max_pressure_error", {}, ["1e-4", "1e-5", "1e-6"],
+              {"kelly": 9, "global": 5}, {"kelly": 4, "global": 3}),
+    "cantilever": ("Cantilever on plane: energy-norm error",
+                   "prm/cantilever_on_plane.prm", "energy_error",
+                   {"Reference": {"Energy": REFERENCE_ENERGY}},
+                   ["1e-5", "1e-6", "1e-7"],
+                   {"kelly": 8, "global": 5}, {"kelly": 4, "global": 3}),
+}
+
+
+def methods(epsilons, quick):
+    """(label, Contact settings) of each method swept."""
+    chosen = [("active set", {"Method": "active set"})]
+    for epsilon in epsilons[1:2] if quick else epsilons:
+        chosen.append(("penalty eps=" + epsilon,
+                       {"Method": "penalty", "Penalty parameter": epsilon}))
+    chosen.append(("augmented lagrangian",
+                   {"Method": "augmented lagrangian"}))
+    return chosen
+
+
+def sweep(work, quick):
+    """Runs every combination; returns {(scene, method, refinement): rows}
+    with each row the statistics and timings of one cycle."""
+    results = {}
+    for scene, (_, prm, _, extra, epsilons, cycles, quick_cycles) in \
+            SCENES.items():
+        for label, contact in methods(epsilons, quick):
+            for refinement in ("kelly", "global"):
+                settings = dict(extra)
+                settings["Contact"] = contact
+                settings["Mesh refinement"] = {
+                    "Strategy": refinement,
+                    "Number of cycles": str((quick_cycles if quick else
+                                             cycles)[refinement])}
+                settings["Output"] = {"Timing table": "true",
+                                      "Contact pressure table": "false"}
+                name = "%s-%s-%s" % (scene, label.replace(" ", "_")
+                                     .replace("=", ""), refinement)
+                run = common.run(work, name, prm, settings)
+                rows = [dict(s, **{"run_time": t["run_time"]})
+                        for s, t in zip(run.rows, run.timings)]
+                results[(scene, label, refinement)] = rows
+    return results
+
+
+def chart(work, results, path):
+    """error against run time, log-log, a panel per scene."""
+    colours = ["#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e",
+               "#e6ab02"]
+    panels = []
+    for scene, (title, _, column, *_rest) in SCENES.items():
+        labels = []
+        for (s, label, _), _rows in results.items():
+            if s == scene and label not in labels:
+                labels.append(label)
+        plots = []
+        for i, label in enumerate(labels):
+            for refinement, dash in (("kelly", 1), ("global", 2)):
+                rows = results[(scene, label, refinement)]
+                data = common.write_data(
+                    work, "%s-%d-%s" % (scene, i, refinement), rows,
+                    ["run_time", column])
+                plots.append(
+                    "'%s' using 1:(abs($2)) with linespoints dt %d lc rgb "
+                    "'%s' pt %d title '%s, %s'" %
+                    (data, dash, colours[i % len(colours)], 7 if dash == 1
+                     else 6, label, refinement))
+        panels.append(
+            "set title '%s'\nset xlabel 'run time without output [s]'\n"
+            "set ylabel 'relative error'\nplot %s\n" %
+            (title, ", \\\n  ".join(plots)))
+    common.gnuplot(
+        "set terminal pngcairo size 1400,560 font ',10'\n"
+        "set output '%s'\nset logscale xy\nset grid\n"
+        "set key bottom left font ',8'\nset multiplot layout 1,2\n%s"
+        "unset multiplot\n" % (path, "".join(panels)))
+
+
+def final_table(results):
+    """The last cycle of every run."""
+    rows = []
+    for (scene, label, refinement), cycles in results.items():
+        last = cycles[-1]
+        column = SCENES[scene][2]
+        rows.append([scene, label, refinement, "%d" % (last["cycle"] + 1),
+                     "{:,}".format(int(last["dofs"])),
+                     "%d" % sum(r["iterations"] for r in cycles),
+                     "%.2f" % last["run_time"], "%.2e" % abs(last[column]),
+                     "%.1e" % last["max_penetration"]])
+    return common.table(["scene", "method", "refinement", "cycles", "dofs",
+                         "linear solves (all cycles)", "run time [s]",
+                         "error", "max penetration [mm]"], rows)
+
+
+def check(results):
+    """What the quick sweep must show; returns the failures."""
+    failures = []
+    for (scene, label, refinement), rows in results.items():
+        column = SCENES[scene][2]
+        for row in rows:
+            if not all(math.isfinite(row[k]) for k in
+                       (column, "run_time", "max_penetration")):
+                failures.append("%s %s %s: not finite" %
+                                (scene, label, refinement))
+        exact = results[(scene, "active set", refinement)]
+        if label == "augmented lagrangian":
+            # the same constrained solution as the active set
+            for a, b in zip(rows, exact):
+                if abs(a[column] - b[column]) > 1e-5 * abs(b[column]) + 1e-12:
+                    failures.append("%s %s %s: error %g, active set %g" % (
+                        scene, label, refinement, a[column], b[column]))
+        if label.startswith("penalty") and \
+                rows[-1]["max_penetration"] <= 0:
+            failures.append("%s %s: no penetration" % (scene, label))
+        if label != "penalty" and rows[-1]["run_time"] <= 0:
+            failures.append("%s %s: no run time" % (scene, label))
+    return failures
+
+
+def main():
+    quick = sys.argv[1:] == ["--quick"]
+    if sys.argv[1:] not in ([], ["--quick"]):
+        sys.exit(__doc__)
+    work = os.path.join(common.ROOT, "build",
+                        "work-precision-quick" if quick else "work-precision")
+    os.makedirs(work, exist_ok=True)
+    if not quick:
+        common.ensure_tools()
+    results = sweep(work, quick)
+    text = final_table(results)
+    print(text)
+    if quick:
+        chart(work, results, os.path.join(work, "work-precision.png"))
+        failures = check(results)
+        for failure in failures:
+            print("FAIL: " + failure)
+        if failures or not os.path.getsize(
+                os.path.join(work, "work-precision.png")):
+            sys.exit(1)
+        print("work-precision --quick: %d runs, all checks passed" %
+              len(results))
+        return
+    chart(work, results, os.path.join(common.DOC, "work-precision.png"))
+    common.replace_sections(os.path.join(common.DOC, "work-precision.md"),
+                            {"final-cycles": text})
+    stability.main(os.path.join(common.ROOT, "build", "stability"))
+
+
+if __name__ == "__main__":
+    main()
