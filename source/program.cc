@@ -28,7 +28,8 @@ namespace signorini
       "       signorini --help            show this text\n"
       "Run in parallel with: mpirun -np N signorini FILE.prm\n"
       "Exit status: 0 success, 1 bad input, 2 contact solver did not converge,\n"
-      "3 active set cycling, 4 linear solver failed, 5 other error.\n";
+      "3 active set cycling, 4 linear solver failed, 5 other error,\n"
+      "6 contact solver stalled, 7 augmented Lagrangian multipliers too slow.\n";
 
     /**
      * Reads @p file into @p prm. `include` lines name files relative to the
