@@ -21,7 +21,7 @@ namespace signorini
     // initial guess.
     const auto saved_solution = solution;
     solution                  = 0;
-    matrix_assembled = false;
+    matrix_assembled          = false;
 
     MPI_Barrier(mpi_communicator);
     const auto start = std::chrono::steady_clock::now();

@@ -143,8 +143,7 @@ namespace signorini
             previous_change = 0.;
             pcout << "   remedy: the multipliers change by a factor of "
                   << number(rate) << " per update on update "
-                  << multiplier_updates
-                  << "; penalty stiffened to epsilon = "
+                  << multiplier_updates << "; penalty stiffened to epsilon = "
                   << number(penalty_parameter) << std::endl;
           }
       }
