@@ -1,6 +1,5 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 
@@ -45,13 +44,22 @@ namespace signorini
                       "rectangle: number of cells in x, y[, z] on the coarse "
                       "mesh.");
     prm.declare_entry("Cell type",
-                      "quadrilateral",
-                      Patterns::Selection("quadrilateral|simplex"),
-                      "rectangle: quadrilateral/hexahedral cells with Q1 "
-                      "elements, or simplex: each quadrilateral split into 8 "
-                      "triangles (hexahedron into 24 tetrahedra) with P1 "
-                      "elements. Simplex meshes run on one process with "
-                      "global refinement.");
+                      "automatic",
+                      Patterns::Selection("automatic|quadrilateral|simplex"),
+                      "quadrilateral: quadrilateral/hexahedral cells with Q1 "
+                      "elements; simplex: triangles/tetrahedra with P1 "
+                      "elements. rectangle: simplex splits each "
+                      "quadrilateral into 8 triangles (hexahedron into 24 "
+                      "tetrahedra); automatic is quadrilateral. gmsh with a "
+                      ".geo: Gmsh makes triangles/tetrahedra, or recombined "
+                      "quadrilaterals (hexahedra: tetrahedra split into "
+                      "four); automatic is what the .geo says (Gmsh's "
+                      "default: simplices).");
+    prm.declare_entry("Mesh size",
+                      "0",
+                      Patterns::Double(0.),
+                      "gmsh with a .geo: target cell size [mm] everywhere; 0 "
+                      "keeps the sizes the .geo gives.");
     prm.declare_entry("Center",
                       "0, 1",
                       Patterns::Anything(),
@@ -63,13 +71,16 @@ namespace signorini
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::Anything(),
-                      "gmsh: the .msh file, relative to the folder of the "
+                      "gmsh: a .msh mesh, or a .geo geometry that Gmsh "
+                      "meshes when the run starts (and remeshes for kelly "
+                      "cycles on simplices), relative to the folder of the "
                       "parameter file. Physical groups of boundary lines "
                       "(faces in 3D) give the boundary ids.");
     prm.declare_entry("Initial refinement",
                       "0",
                       Patterns::Integer(0, 12),
-                      "Global refinements of the coarse mesh before cycle 0.");
+                      "Global refinements of the coarse mesh before cycle 0 "
+                      "(a .geo: Gmsh's sizes divided by 2^k).");
     prm.leave_subsection();
   }
 
@@ -103,7 +114,12 @@ namespace signorini
                              "must exceed the lower left corner in every "
                              "coordinate");
       }
-    simplex = prm.get("Cell type") == "simplex";
+    const std::string cells = prm.get("Cell type");
+    cell_type = cells == "simplex" ? GmshOptions::CellType::simplex :
+                cells == "quadrilateral" ?
+                                     GmshOptions::CellType::quadrilateral :
+                                     GmshOptions::CellType::automatic;
+    mesh_size = prm.get_double("Mesh size");
     if (type == Type::half_ball || type == Type::quarter_disk)
       {
         center = parse::point<dim>(prm.get("Center"), "Geometry/Center");
@@ -127,9 +143,30 @@ namespace signorini
   }
 
   template <int dim>
-  void
-  Geometry<dim>::create_coarse_mesh(Triangulation<dim> &coarse_mesh) const
+  bool
+  Geometry<dim>::from_geometry_file() const
   {
+    return type == Type::gmsh && mesh_file.size() > 4 &&
+           mesh_file.substr(mesh_file.size() - 4) == ".geo";
+  }
+
+  template <int dim>
+  GmshOptions
+  Geometry<dim>::gmsh_options() const
+  {
+    GmshOptions options;
+    options.cell_type   = cell_type;
+    options.size        = mesh_size;
+    options.size_factor = std::pow(0.5, initial_refinement);
+    return options;
+  }
+
+  template <int dim>
+  void
+  Geometry<dim>::create_coarse_mesh(Triangulation<dim> &coarse_mesh,
+                                    const MPI_Comm      comm) const
+  {
+    const bool simplex = cell_type == GmshOptions::CellType::simplex;
     switch (type)
       {
         case Type::rectangle:
@@ -191,18 +228,12 @@ namespace signorini
           }
         case Type::gmsh:
           {
-            GridIn<dim> grid_in;
-            grid_in.attach_triangulation(coarse_mesh);
-            std::ifstream input(mesh_file);
-            try
+            if (from_geometry_file())
+              mesh_geometry_file(mesh_file, gmsh_options(), coarse_mesh, comm);
+            else
               {
-                grid_in.read_msh(input);
-              }
-            catch (const ExceptionBase &error)
-              {
-                throw InputError("Geometry/Mesh file",
-                                 "cannot read '" + mesh_file +
-                                   "': " + one_line(error));
+                std::ifstream input(mesh_file);
+                read_msh(input, mesh_file, coarse_mesh);
               }
             break;
           }

@@ -19,7 +19,11 @@ namespace signorini
                       Patterns::Selection("global|kelly"),
                       "global: refine every cell; kelly: refine and coarsen "
                       "the cells with the largest/smallest Kelly error "
-                      "indicators (quadrilateral/hexahedral meshes only).");
+                      "indicators (quadrilaterals/hexahedra), or, on "
+                      "triangles/tetrahedra from a .geo, remesh it with Gmsh "
+                      "with cell sizes from the indicators (growing the "
+                      "number of cells as the fractions would). A .geo on "
+                      "simplices remeshes for global too, halving sizes.");
     prm.declare_entry("Refine fraction",
                       "0.3",
                       Patterns::Double(0., 1.),

@@ -27,6 +27,9 @@
 
 namespace signorini
 {
+  template <int dim>
+  class MeshAdaptation;
+
   /**
    * A vertex of the candidate contact boundary whose vertical displacement is
    * free (not fixed by a Dirichlet condition or a hanging node).
@@ -134,6 +137,7 @@ namespace signorini
     ContactProblem(const Parameters<dim> &parameters,
                    const std::string     &parameter_text,
                    const MPI_Comm         mpi_communicator);
+    ~ContactProblem();
 
     /** All cycles; throws SolverFailure or InputError. */
     void
@@ -262,6 +266,8 @@ namespace signorini
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;
 
+    /** Where each cycle's mesh comes from. */
+    std::unique_ptr<MeshAdaptation<dim>>        mesh_adaptation;
     std::unique_ptr<dealii::Triangulation<dim>> triangulation;
     bool                                        simplex = false;
     std::unique_ptr<dealii::FiniteElement<dim>> fe;

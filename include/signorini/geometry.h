@@ -1,9 +1,12 @@
 #ifndef signorini_geometry_h
 #define signorini_geometry_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
+
+#include <signorini/gmsh_mesher.h>
 
 #include <string>
 #include <vector>
@@ -21,8 +24,12 @@ namespace signorini
    * - `half ball` (a half-disk in 2D) of `Radius` around `Center`, flat face
    *   on top (+y, or +z in 3D), curved face below: boundary id 0 on the curved
    *   face, 1 on the flat one.
-   * - `gmsh`: a `.msh` file; physical groups give boundary ids. Triangles or
-   *   tetrahedra get P1 elements, quadrilaterals or hexahedra Q1.
+   * - `gmsh`: a `.msh` file, or a `.geo` geometry meshed by Gmsh when the
+   *   run starts (see gmsh_mesher.h) with the `Cell type` and `Mesh size`
+   *   asked for; physical groups give boundary ids. Triangles or
+   *   tetrahedra get P1 elements, quadrilaterals or hexahedra Q1. A `.geo`
+   *   takes `Initial refinement` as sizes divided by 2^k, so that curved
+   *   boundaries follow the geometry.
    */
   template <int dim>
   struct Geometry
@@ -39,9 +46,11 @@ namespace signorini
     dealii::Point<dim>        lower_left;
     dealii::Point<dim>        upper_right;
     std::vector<unsigned int> subdivisions;
-    bool                      simplex = false;
-    dealii::Point<dim>        center;
-    double                    radius = 1.;
+    GmshOptions::CellType     cell_type = GmshOptions::CellType::automatic;
+    /** gmsh with a .geo: uniform target size [mm], 0: the .geo's sizes. */
+    double             mesh_size = 0.;
+    dealii::Point<dim> center;
+    double             radius = 1.;
     /** Absolute path, resolved relative to the parameter file's folder. */
     std::string  mesh_file;
     unsigned int initial_refinement = 0;
@@ -54,9 +63,22 @@ namespace signorini
     parse_parameters(dealii::ParameterHandler &prm,
                      const std::string        &prm_directory);
 
-    /** Fills the empty serial @p coarse_mesh with the unrefined mesh. */
+    /** Whether `Mesh file` is a Gmsh geometry (.geo) meshed at run time,
+     * which can be remeshed. */
+    bool
+    from_geometry_file() const;
+
+    /** What Gmsh is asked for when it meshes the .geo: the cell type, the
+     * mesh size and the initial refinement. */
+    GmshOptions
+    gmsh_options() const;
+
+    /** Fills the empty serial @p coarse_mesh with the unrefined mesh, the
+     * same on every process of @p comm (a .geo is meshed by the first one;
+     * its initial refinement is part of the meshing). */
     void
-    create_coarse_mesh(dealii::Triangulation<dim> &coarse_mesh) const;
+    create_coarse_mesh(dealii::Triangulation<dim> &coarse_mesh,
+                       const MPI_Comm              comm) const;
   };
 } // namespace signorini
 

@@ -1,4 +1,3 @@
-#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
@@ -10,6 +9,7 @@
 
 #include <signorini/contact_problem.h>
 #include <signorini/input_error.h>
+#include <signorini/mesh_adaptation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,13 +38,19 @@ namespace signorini
   {
   }
 
+  // Defined here, where MeshAdaptation is a complete type.
+  template <int dim>
+  ContactProblem<dim>::~ContactProblem()
+  {
+  }
+
   template <int dim>
   void
   ContactProblem<dim>::make_grid()
   {
     TimerOutput::Scope t(timer, "Setup: grid");
     Triangulation<dim> coarse_mesh;
-    parameters.geometry.create_coarse_mesh(coarse_mesh);
+    parameters.geometry.create_coarse_mesh(coarse_mesh, mpi_communicator);
     if (coarse_mesh.get_reference_cells().size() > 1)
       throw InputError("Geometry/Mesh file",
                        "the mesh mixes cell types; it must hold only "
@@ -56,27 +62,11 @@ namespace signorini
       GridTools::compute_bounding_box(coarse_mesh).get_boundary_points();
     touching_tolerance = 1e-12 * corners.first.distance(corners.second);
 
-    if (!simplex)
-      triangulation =
-        std::make_unique<parallel::distributed::Triangulation<dim>>(
-          mpi_communicator,
-          typename Triangulation<dim>::MeshSmoothing(
-            Triangulation<dim>::smoothing_on_refinement |
-            Triangulation<dim>::smoothing_on_coarsening));
-    else
-      {
-        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
-          throw InputError("Geometry",
-                           "simplex meshes run on one process only");
-        if (parameters.refinement.strategy == Refinement::Strategy::kelly &&
-            parameters.refinement.n_cycles > 1)
-          throw InputError("Mesh refinement/Strategy",
-                           "kelly refinement needs quadrilateral/hexahedral "
-                           "cells; use global on simplex meshes");
-        triangulation = std::make_unique<Triangulation<dim>>();
-      }
-    triangulation->copy_triangulation(coarse_mesh);
-    triangulation->refine_global(parameters.geometry.initial_refinement);
+    mesh_adaptation = create_mesh_adaptation(parameters.geometry,
+                                             parameters.refinement,
+                                             simplex,
+                                             mpi_communicator);
+    triangulation   = mesh_adaptation->create_mesh(coarse_mesh);
 
     const ReferenceCell cell_type = triangulation->get_reference_cells()[0];
     if (simplex)
@@ -309,6 +299,8 @@ namespace signorini
   template ContactProblem<3>::ContactProblem(const Parameters<3> &,
                                              const std::string &,
                                              MPI_Comm);
+  template ContactProblem<2>::~ContactProblem();
+  template ContactProblem<3>::~ContactProblem();
   template void
   ContactProblem<2>::make_grid();
   template void
