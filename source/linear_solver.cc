@@ -1,5 +1,7 @@
 #include <signorini/linear_solver.h>
 
+#include <algorithm>
+
 namespace signorini
 {
   using namespace dealii;
@@ -20,6 +22,14 @@ namespace signorini
                       Patterns::Double(0.),
                       "amg cg: residual reduction relative to the right-hand "
                       "side.");
+    prm.declare_entry("Newton tolerance",
+                      "1e-4",
+                      Patterns::Double(0.),
+                      "amg cg: residual reduction, relative to the "
+                      "right-hand side, of the Newton steps taken while the "
+                      "active set still changes (an inexact Newton method); "
+                      "once an update leaves the active set as it was, the "
+                      "next step is solved to Tolerance.");
     prm.declare_entry("Maximum iterations",
                       "2000",
                       Patterns::Integer(1),
@@ -32,11 +42,12 @@ namespace signorini
   {
     prm.enter_subsection("Linear solver");
     const std::string name = prm.get("Type");
-    type           = name == "direct" || (name == "automatic" && dim == 2) ?
-                       Type::direct :
-                       Type::amg_cg;
-    tolerance      = prm.get_double("Tolerance");
-    max_iterations = prm.get_integer("Maximum iterations");
+    type             = name == "direct" || (name == "automatic" && dim == 2) ?
+                         Type::direct :
+                         Type::amg_cg;
+    tolerance        = prm.get_double("Tolerance");
+    max_iterations   = prm.get_integer("Maximum iterations");
+    newton_tolerance = std::max(prm.get_double("Newton tolerance"), tolerance);
     prm.leave_subsection();
   }
 

@@ -16,6 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <signorini/cell_stiffness.h>
 #include <signorini/linear_system_solver.h>
 #include <signorini/parameters.h>
 
@@ -200,8 +201,11 @@ namespace signorini
     active_set_signature() const;
 
     // solve.cc
+    /** One linear solve of the Newton system; iterative solvers stop at
+     * Linear solver/Tolerance on the @p final_step of an iteration, at the
+     * looser Newton tolerance while the active set may still change. */
     void
-    solve();
+    solve(const bool final_step);
 
     // methods.cc
     /** One cycle's contact problem by the chosen method, with its remedies. */
@@ -282,6 +286,8 @@ namespace signorini
     /** fixed_constraints plus the active contact nodes at the obstacle. */
     dealii::AffineConstraints<double> constraints;
 
+    /** Cell stiffness matrices, computed once per cell shape. */
+    CellStiffness<dim>                     cell_stiffness;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     dealii::TrilinosWrappers::MPI::Vector  system_rhs;
     /** system_rhs without the augmented Lagrangian multipliers' share. */
@@ -291,12 +297,15 @@ namespace signorini
     /** What system_matrix was assembled for: the active set and epsilon;
      * while they stay, the matrix and its factorisation are reused. */
     bool matrix_assembled = false;
-    bool matrix_changed   = true;
     std::pair<std::pair<unsigned int, std::size_t>, double> assembled_for;
     /** Displacement [mm], with ghost entries. */
     dealii::TrilinosWrappers::MPI::Vector solution;
     /** K u - f with the contact set free: the obstacle's nodal force [N]. */
     dealii::TrilinosWrappers::MPI::Vector residual;
+    /** The traction on this mesh: Boundary conditions/Traction, or the
+     * uniform one of the Traction resultant. */
+    const dealii::Function<dim>           *traction = nullptr;
+    std::unique_ptr<dealii::Function<dim>> uniform_traction;
     /** External load vector f [N]. */
     dealii::TrilinosWrappers::MPI::Vector load;
     /** Contact pressure [MPa] at the vertical dofs of contact nodes, with

@@ -21,6 +21,10 @@ namespace signorini
    * - `half ball` (a half-disk in 2D) of `Radius` around `Center`, flat face
    *   on top (+y, or +z in 3D), curved face below: boundary id 0 on the curved
    *   face, 1 on the flat one.
+   * - `quarter disk` (2D) and `quarter ball` (3D): the part x >= Center x
+   *   (and y >= Center y in 3D) of the half ball, for symmetric scenes; the
+   *   symmetry lines or planes get ids 2 (x = Center x) and 3 (y = Center
+   *   y).
    * - `gmsh`: a `.msh` file; physical groups give boundary ids. Triangles or
    *   tetrahedra get P1 elements, quadrilaterals or hexahedra Q1.
    */
@@ -32,6 +36,7 @@ namespace signorini
       rectangle,
       half_ball,
       quarter_disk,
+      quarter_ball,
       gmsh
     };
 

@@ -29,9 +29,12 @@ namespace signorini
     void
     parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
 
-    Type         type           = Type::direct;
-    double       tolerance      = 1e-12;
-    unsigned int max_iterations = 2000;
+    Type   type      = Type::direct;
+    double tolerance = 1e-12;
+    /** amg cg: the looser reduction of the Newton steps taken while the
+     * active set still changes. */
+    double       newton_tolerance = 1e-4;
+    unsigned int max_iterations   = 2000;
   };
 } // namespace signorini
 

@@ -297,6 +297,9 @@ namespace signorini
     Vector<float> ranks(triangulation->n_active_cells());
     ranks = static_cast<float>(rank);
     data_out.add_data_vector(ranks, "mpi_rank");
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     data_out.build_patches(*mapping);
 
     const std::string &directory = parameters.output.directory;

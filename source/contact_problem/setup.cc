@@ -34,7 +34,11 @@ namespace signorini
             parameters.output.print_timings ? TimerOutput::summary :
                                               TimerOutput::never,
             TimerOutput::wall_times)
-    , linear_system_solver(parameters.linear_solver)
+    , cell_stiffness(parameters.material)
+    , linear_system_solver(parameters.linear_solver,
+                           parameters.contact.remedies,
+                           pcout,
+                           timer)
   {
   }
 
@@ -158,8 +162,10 @@ namespace signorini
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
     sparsity.compress();
-    system_matrix.reinit(sparsity);
+    // The solver's factorisation refers to the old matrix: drop it first.
     linear_system_solver.reset();
+    system_matrix.reinit(sparsity);
+    cell_stiffness.clear();
     matrix_assembled = false;
 
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
