@@ -4,6 +4,7 @@
 
 #include <signorini/contact_problem.h>
 #include <signorini/failures.h>
+#include <signorini/include_check.h>
 #include <signorini/input_error.h>
 #include <signorini/parameters.h>
 #include <signorini/program.h>
@@ -136,6 +137,7 @@ namespace signorini
       {
         if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
           throw InputError::at(file, "cannot open the parameter file");
+        check_includes(file);
         parse_file(prm, file);
         if (prm.get_integer("Dimension") == 2)
           run_scene<2>(prm, file);
