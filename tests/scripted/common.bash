@@ -32,13 +32,17 @@ files() {
   (cd "$1" && find . -type f | sed 's|^\./||' | LC_ALL=C sort)
 }
 
-# resume_test [LAUNCHER...]: the default scene with 7 cycles run whole, and
-# run again, killed (SIGKILL, every process) once the checkpoint of cycle 3
-# (or later)
+# resume_test [LAUNCHER...]: the default scene with CYCLES cycles (6 unless
+# set, and the lines of the array SCENE, if set) run whole, and run again,
+# killed (SIGKILL, every process) once the checkpoint of cycle KILL_AFTER (2
+# unless set, or a later one)
 # is written, then resumed with --resume; the resumed results must equal the
 # uninterrupted ones. LAUNCHER is e.g. `mpirun -np 2`.
 resume_test() {
-  local cycles=("subsection Mesh refinement" "  set Number of cycles = 7" "end")
+  local n=${CYCLES:-6} k=${KILL_AFTER:-2}
+  local cycles=("${SCENE[@]}"
+    "subsection Mesh refinement" "  set Number of cycles = $n" "end")
+  local later="[$k-$((n - 1))]"
   scene reference.prm reference "${cycles[@]}"
   scene scene.prm out "${cycles[@]}"
   "$@" "$SIGNORINI" reference.prm > reference.log 2>&1
@@ -47,7 +51,7 @@ resume_test() {
   "$@" "$SIGNORINI" scene.prm > killed.log 2>&1 &
   local pid=$! i
   for i in $(seq 12000); do
-    ls out/checkpoint-0[3-6].state > /dev/null 2>&1 && break
+    ls out/checkpoint-0$later.state > /dev/null 2>&1 && break
     sleep 0.01
   done
   # The program's processes: under mpirun its children, else itself.
@@ -56,10 +60,10 @@ resume_test() {
   local status=$?
   local rows=$(($(wc -l < out/statistics.csv) - 1))
   echo "killed after a checkpoint, before the last cycle:" \
-    $([ $status -ne 0 ] && [ $rows -lt 7 ] && echo yes || echo "no (status $status, $rows cycles)")
+    $([ $status -ne 0 ] && [ $rows -lt $n ] && echo yes || echo "no (status $status, $rows cycles)")
 
   run "$@" "$SIGNORINI" --resume scene.prm
-  echo "resumed:" $(grep -q "^Resuming after cycle [3-6] from out/checkpoint-0[3-6].state" run.log && echo yes || echo no)
+  echo "resumed:" $(grep -q "^Resuming after cycle $later from out/checkpoint-0$later.state" run.log && echo yes || echo no)
   echo "statistics.csv equals the uninterrupted run's to 1e-8:" \
     $(numdiff -q -a 1e-8 -r 1e-8 -s ' \t\n,' out/statistics.csv reference/statistics.csv > /dev/null && echo yes || echo no)
   echo "solution.pvd lists:"
