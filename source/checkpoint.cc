@@ -116,8 +116,8 @@ namespace signorini
     bool
     read_block(std::istream &in, const std::string &key, std::string &bytes)
     {
-      std::string   word;
-      std::size_t   size = 0;
+      std::string word;
+      std::size_t size = 0;
       if (!(in >> word >> size) || word != key || in.get() != '\n')
         return false;
       bytes.resize(size);
@@ -183,10 +183,8 @@ namespace signorini
                 !read_block(in, "state", found.state))
               found.error = name + ": not a signorini checkpoint, or damaged";
             else if (saved_parameters != parameter_text)
-              found.error = name +
-                            ": written by a different parameter set (" +
-                            first_difference(saved_parameters,
-                                             parameter_text) +
+              found.error = name + ": written by a different parameter set (" +
+                            first_difference(saved_parameters, parameter_text) +
                             "); run without --resume to start afresh";
           }
       }

@@ -12,8 +12,8 @@ namespace signorini
     Member
     classify(const std::string &file_name)
     {
-      Member      member;
-      std::string name = file_name;
+      Member            member;
+      std::string       name = file_name;
       const std::string part = ".part";
       if (name.size() > part.size() &&
           name.compare(name.size() - part.size(), part.size(), part) == 0)
@@ -78,8 +78,7 @@ namespace signorini
           if (error)
             throw std::runtime_error("cannot remove the stale file '" +
                                      entry.path().string() +
-                                     "' of an earlier run: " +
-                                     error.message());
+                                     "' of an earlier run: " + error.message());
           removed.push_back(name);
         }
       if (error)

@@ -4,7 +4,6 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <mpi.h>
-
 #include <optional>
 #include <string>
 

@@ -13,7 +13,6 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
-
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -32,14 +31,13 @@ namespace signorini
   {
     static_assert(sizeof(CycleStatistics<dim>) == (dim == 2 ? 200 : 224),
                   "CycleStatistics changed: serialize the new field here");
-    archive &row.cycle &row.cells &row.dofs &row.iterations
-      &row.multiplier_updates &row.sign_rule &row.penalty_parameter
-        &row.active_nodes &row.contact_force &row.max_penetration
-          &row.estimated_error &row.max_pressure &row.contact_width
-            &row.applied_force &row.support_reaction &row.integrated_pressure
-              &row.equilibrium_error &row.energy &row.max_pressure_error
-                &row.contact_width_error &row.energy_error &row.pressure_error
-                  &row.probes;
+    archive &row.cycle &row.cells &row.dofs &row.iterations &row
+      .multiplier_updates &row.sign_rule &row.penalty_parameter &row
+      .active_nodes &row.contact_force &row.max_penetration &row
+      .estimated_error &row.max_pressure &row.contact_width &row
+      .applied_force &row.support_reaction &row.integrated_pressure &row
+      .equilibrium_error &row.energy &row.max_pressure_error &row
+      .contact_width_error &row.energy_error &row.pressure_error &row.probes;
   }
 
   template <class Archive>
@@ -48,8 +46,8 @@ namespace signorini
   {
     static_assert(sizeof(CycleTimings) == 40,
                   "CycleTimings changed: serialize the new field here");
-    archive &row.cycle &row.contact_solve &row.linear_solve &row.run_time
-      &row.peak_memory;
+    archive &row.cycle &row.contact_solve &row.linear_solve &row.run_time &row
+      .peak_memory;
   }
 
   namespace
@@ -73,8 +71,8 @@ namespace signorini
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &run_time &statistics &timings &written_cycles &files
-          &solution &pressure;
+        archive &run_time &statistics &timings &written_cycles &files &solution
+          &pressure;
       }
     };
 
@@ -91,9 +89,8 @@ namespace signorini
   ContactProblem<dim>::start_output(const bool resume, double &run_time)
   {
     const std::string &directory = parameters.output.directory;
-    checkpoint = std::make_unique<Checkpoint>(directory,
-                                              parameter_text,
-                                              mpi_communicator);
+    checkpoint =
+      std::make_unique<Checkpoint>(directory, parameter_text, mpi_communicator);
     const std::optional<unsigned int> resumed =
       resume ? checkpoint->find_latest() : std::nullopt;
     if (resume && !resumed)
@@ -207,7 +204,7 @@ namespace signorini
     if (!parameters.checkpoint.enabled)
       return;
     TimerOutput::Scope t(timer, "Output: checkpoint");
-    State<dim> state;
+    State<dim>         state;
     if (auto *distributed =
           dynamic_cast<parallel::distributed::Triangulation<dim> *>(
             triangulation.get()))
@@ -218,8 +215,8 @@ namespace signorini
           std::vector<const VectorType *>{&solution, &pressure});
         distributed->register_data_attach(
           [this](const auto &cell, const auto) {
-            const float       value = estimated_error_per_cell(
-              cell->active_cell_index());
+            const float value =
+              estimated_error_per_cell(cell->active_cell_index());
             std::vector<char> data(sizeof(value));
             std::memcpy(data.data(), &value, sizeof(value));
             return data;
@@ -248,8 +245,8 @@ namespace signorini
             std::ifstream in(parameters.output.directory + "/" + name,
                              std::ios::binary);
             if (in)
-              state.files[name] = std::string(
-                std::istreambuf_iterator<char>(in), {});
+              state.files[name] =
+                std::string(std::istreambuf_iterator<char>(in), {});
           }
         boost::archive::binary_oarchive archive(out);
         archive << state;
