@@ -21,6 +21,7 @@ namespace signorini
     Refinement::declare_parameters(prm);
     OutputParameters<2>::declare_parameters(prm);
     Reference<2>::declare_parameters(prm);
+    CheckpointParameters::declare_parameters(prm);
   }
 
   template <int dim>
@@ -37,6 +38,7 @@ namespace signorini
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
   }
 
   template struct Parameters<2>;

@@ -17,6 +17,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <signorini/cell_stiffness.h>
+#include <signorini/checkpoint.h>
 #include <signorini/linear_system_solver.h>
 #include <signorini/parameters.h>
 
@@ -136,15 +137,28 @@ namespace signorini
                    const std::string     &parameter_text,
                    const MPI_Comm         mpi_communicator);
 
-    /** All cycles; throws SolverFailure or InputError. */
+    /** All cycles; throws SolverFailure or InputError. With @p resume,
+     * continues after the cycle of the newest checkpoint in the output
+     * directory (from cycle 0 if there is none). */
     void
-    run();
+    run(const bool resume = false);
 
 
   private:
     // run.cc
     void
-    run_cycles();
+    run_cycles(const bool resume);
+
+    // checkpoint.cc
+    /** Takes over the output directory (removing what an earlier run left
+     * that this run does not continue), writes the obstacle and the
+     * parameters, and on @p resume restores the newest checkpoint, adding
+     * its run time to @p run_time. Returns the first cycle to compute. */
+    unsigned int
+    start_output(const bool resume, double &run_time);
+    /** Writes the checkpoint of cycle @p cycle (Output/Checkpoint). */
+    void
+    save_checkpoint(const unsigned int cycle, const double run_time);
 
     // setup.cc
     void
@@ -329,6 +343,7 @@ namespace signorini
     std::vector<CycleStatistics<dim>>           cycle_statistics;
     std::vector<CycleTimings>                   cycle_timings;
     std::vector<std::pair<double, std::string>> written_cycles;
+    std::unique_ptr<Checkpoint>                 checkpoint;
   };
 } // namespace signorini
 

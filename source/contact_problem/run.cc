@@ -8,11 +8,11 @@ namespace signorini
 
   template <int dim>
   void
-  ContactProblem<dim>::run()
+  ContactProblem<dim>::run(const bool resume)
   {
     try
       {
-        run_cycles();
+        run_cycles(resume);
       }
     catch (...)
       {
@@ -24,7 +24,7 @@ namespace signorini
 
   template <int dim>
   void
-  ContactProblem<dim>::run_cycles()
+  ContactProblem<dim>::run_cycles(const bool resume)
   {
     // Wall time on the slowest process.
     const auto now = [this]() {
@@ -37,8 +37,9 @@ namespace signorini
     make_grid();
     setup_system();
     run_time += now() - start;
-    write_obstacle_and_parameters();
-    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
+    const unsigned int first_cycle = start_output(resume, run_time);
+    for (unsigned int cycle = first_cycle;
+         cycle < parameters.refinement.n_cycles;
          ++cycle)
       {
         CycleTimings timings;
@@ -62,15 +63,16 @@ namespace signorini
             timings.linear_solve = time_linear_solve();
             write_timings(timings);
           }
+        save_checkpoint(cycle, run_time);
       }
   }
 
   template void
-  ContactProblem<2>::run_cycles();
+  ContactProblem<2>::run_cycles(bool);
   template void
-  ContactProblem<3>::run_cycles();
+  ContactProblem<3>::run_cycles(bool);
   template void
-  ContactProblem<2>::run();
+  ContactProblem<2>::run(bool);
   template void
-  ContactProblem<3>::run();
+  ContactProblem<3>::run(bool);
 } // namespace signorini
