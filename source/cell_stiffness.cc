@@ -34,8 +34,8 @@ namespace signorini
   CellStiffness<dim>::compute(const FEValues<dim> &fe_values,
                               FullMatrix<double>  &cell_matrix) const
   {
-    const unsigned int n = fe_values.get_fe().n_dofs_per_cell();
-    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int               n = fe_values.get_fe().n_dofs_per_cell();
+    const FEValuesExtractors::Vector displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(n), stress(n);
     cell_matrix.reinit(n, n);
     for (const unsigned int q : fe_values.quadrature_point_indices())

@@ -13,10 +13,11 @@ namespace signorini
     prm.declare_entry("Type",
                       "automatic",
                       Patterns::Selection("automatic|direct|amg cg"),
-                      "direct: sparse LU (Trilinos Amesos KLU); amg cg: "
+                      "direct: sparse LU (Trilinos Amesos MUMPS); amg cg: "
                       "conjugate gradients with algebraic multigrid (Trilinos "
-                      "ML); automatic: direct in 2D, amg cg in 3D, the faster "
-                      "of the two as measured (see README).");
+                      "ML); automatic: direct in 2D on one process, amg cg "
+                      "in 3D and on several processes, the faster choice as "
+                      "measured (see README).");
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0.),
@@ -38,14 +39,17 @@ namespace signorini
   }
 
   void
-  LinearSolver::parse_parameters(ParameterHandler &prm, const unsigned int dim)
+  LinearSolver::parse_parameters(ParameterHandler  &prm,
+                                 const unsigned int dim,
+                                 const unsigned int n_processes)
   {
     prm.enter_subsection("Linear solver");
-    const std::string name = prm.get("Type");
-    type             = name == "direct" || (name == "automatic" && dim == 2) ?
-                         Type::direct :
-                         Type::amg_cg;
-    tolerance        = prm.get_double("Tolerance");
+    const std::string name              = prm.get("Type");
+    const bool        direct_by_default = dim == 2 && n_processes == 1;
+    type      = name == "direct" || (name == "automatic" && direct_by_default) ?
+                  Type::direct :
+                  Type::amg_cg;
+    tolerance = prm.get_double("Tolerance");
     max_iterations   = prm.get_integer("Maximum iterations");
     newton_tolerance = std::max(prm.get_double("Newton tolerance"), tolerance);
     prm.leave_subsection();

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <signorini/parameters.h>
 
 namespace signorini
@@ -34,7 +36,8 @@ namespace signorini
     boundary_conditions.parse_parameters(prm);
     obstacle.parse_parameters(prm);
     contact.parse_parameters(prm);
-    linear_solver.parse_parameters(prm, dim);
+    linear_solver.parse_parameters(
+      prm, dim, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);

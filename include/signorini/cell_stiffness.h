@@ -48,10 +48,10 @@ namespace signorini
     static constexpr unsigned int max_vertices = 1U << dim;
     using Shape = std::array<double, dim *(max_vertices - 1)>;
 
-    const Material                         &material;
+    const Material                             &material;
     std::map<Shape, dealii::FullMatrix<double>> cache;
-    unsigned int                                 lookups = 0;
-    dealii::FullMatrix<double>                   scaled;
+    unsigned int                                lookups = 0;
+    dealii::FullMatrix<double>                  scaled;
   };
 } // namespace signorini
 

@@ -292,7 +292,7 @@ namespace signorini
     /** Dofs on a Dirichlet boundary in a fixed component: where the
      * support reactions act. */
     dealii::IndexSet support_dofs;
-    /** Translations and rotations, for the AMG (only when it is used). */
+    /** The translations, the AMG's near-null space (when it is used). */
     std::vector<dealii::TrilinosWrappers::MPI::Vector> rigid_body_modes;
 
     /** Hanging nodes and Dirichlet data; fixed within a cycle. */

@@ -59,8 +59,9 @@ namespace signorini
     /**
      * Solves @p matrix x = @p rhs; @p solution is the initial guess of CG,
      * which stops at a residual of @p relative_tolerance times the norm of
-     * @p rhs (the direct solver ignores it). @p modes are the rigid-body
-     * modes, the near-null space for the AMG. Returns the iterations (1 for
+     * @p rhs (the direct solver ignores it). @p modes are the
+     * translations (one vector per direction), the near-null space of the
+     * AMG. Returns the iterations (1 for
      * the direct solver); throws SolverFailure if even the direct solver
      * fails.
      */

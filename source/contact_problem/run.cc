@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <signorini/contact_problem.h>
 
 #include <chrono>
@@ -64,6 +66,19 @@ namespace signorini
             write_timings(timings);
           }
         save_checkpoint(cycle, run_time);
+      }
+    if (parameters.output.print_timings)
+      {
+        Utilities::System::MemoryStats memory;
+        Utilities::System::get_memory_stats(memory);
+        const double peak =
+          Utilities::MPI::sum(static_cast<double>(memory.VmHWM),
+                              mpi_communicator) /
+          1024.;
+        pcout << "Peak memory: " << number(peak) << " MB on "
+              << Utilities::MPI::n_mpi_processes(mpi_communicator)
+              << " processes, " << number(peak * 1024. / dof_handler.n_dofs())
+              << " kB per dof of the final mesh" << std::endl;
       }
   }
 
