@@ -212,28 +212,34 @@ namespace signorini
                           const std::string &state) const
   {
     write_collectively(mpi_communicator, [&]() {
-      if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-        return;
-      write_atomically(state_file(cycle), [&](std::ostream &out) {
-        out << magic << '\n'
-            << "cycle " << cycle << '\n'
-            << "parameters " << parameter_text.size() << '\n'
-            << parameter_text << "state " << state.size() << '\n'
-            << state;
-      });
-      // The new checkpoint is complete: the older ones go.
-      namespace fs = std::filesystem;
-      std::error_code          error;
-      std::vector<std::string> older;
-      for (const auto &entry : fs::directory_iterator(directory, error))
-        {
-          const auto member =
-            output_series::classify(entry.path().filename().string());
-          if (member.checkpoint && *member.cycle != cycle)
-            older.push_back(entry.path().string());
-        }
-      for (const auto &name : older)
-        fs::remove(name, error);
+      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        write_state_file(cycle, state);
     });
+  }
+
+  void
+  Checkpoint::write_state_file(const unsigned int cycle,
+                               const std::string &state) const
+  {
+    write_atomically(state_file(cycle), [&](std::ostream &out) {
+      out << magic << '\n'
+          << "cycle " << cycle << '\n'
+          << "parameters " << parameter_text.size() << '\n'
+          << parameter_text << "state " << state.size() << '\n'
+          << state;
+    });
+    // The new checkpoint is complete: the older ones go.
+    namespace fs = std::filesystem;
+    std::error_code          error;
+    std::vector<std::string> older;
+    for (const auto &entry : fs::directory_iterator(directory, error))
+      {
+        const auto member =
+          output_series::classify(entry.path().filename().string());
+        if (member.checkpoint && *member.cycle != cycle)
+          older.push_back(entry.path().string());
+      }
+    for (const auto &name : older)
+      fs::remove(name, error);
   }
 } // namespace signorini

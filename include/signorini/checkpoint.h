@@ -67,6 +67,12 @@ namespace signorini
     void
     write_state(const unsigned int cycle, const std::string &state) const;
 
+    /** write_state() on process 0 alone, without communication: for one
+     * process, from the background writer. Throws std::runtime_error if
+     * writing fails. */
+    void
+    write_state_file(const unsigned int cycle, const std::string &state) const;
+
   private:
     const std::string directory;
     const std::string parameter_text;

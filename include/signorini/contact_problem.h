@@ -16,12 +16,14 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <signorini/background_writer.h>
 #include <signorini/cell_stiffness.h>
 #include <signorini/checkpoint.h>
 #include <signorini/linear_system_solver.h>
 #include <signorini/parameters.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -271,6 +273,12 @@ namespace signorini
                           dealii::Tensor<1, dim>   &value) const;
     void
     record_statistics(const unsigned int cycle);
+    /** The series' records after the cycles written so far: file name
+     * (solution.pvd, statistics.csv) and text. */
+    std::map<std::string, std::string>
+    series_records() const;
+    /** Writes the cycle's VTU file (on one process in the background, with
+     * the records queued after it) and its records. */
     void
     output_results(const unsigned int cycle);
 
@@ -344,6 +352,9 @@ namespace signorini
     std::vector<CycleTimings>                   cycle_timings;
     std::vector<std::pair<double, std::string>> written_cycles;
     std::unique_ptr<Checkpoint>                 checkpoint;
+    /** Last, so that it is destroyed first: the files being written in the
+     * background refer to the members above. */
+    BackgroundWriter background_writer;
   };
 } // namespace signorini
 

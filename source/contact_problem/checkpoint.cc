@@ -240,18 +240,27 @@ namespace signorini
     std::ostringstream out;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
+        // The records as output_results() writes them (perhaps still in
+        // the background), the other tables as they are on disk.
+        const auto records = series_records();
         for (const auto &name : tables)
-          {
-            std::ifstream in(parameters.output.directory + "/" + name,
-                             std::ios::binary);
-            if (in)
-              state.files[name] =
-                std::string(std::istreambuf_iterator<char>(in), {});
-          }
+          if (const auto record = records.find(name); record != records.end())
+            state.files[name] = record->second;
+          else if (std::ifstream in(parameters.output.directory + "/" + name,
+                                    std::ios::binary);
+                   in)
+            state.files[name] =
+              std::string(std::istreambuf_iterator<char>(in), {});
         boost::archive::binary_oarchive archive(out);
         archive << state;
       }
-    checkpoint->write_state(cycle, out.str());
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      // After the cycle's files, which the background writer writes.
+      background_writer.add([this, cycle, text = out.str()]() {
+        checkpoint->write_state_file(cycle, text);
+      });
+    else
+      checkpoint->write_state(cycle, out.str());
   }
 
   template unsigned int

@@ -18,8 +18,17 @@ namespace signorini
       }
     catch (...)
       {
-        // A failed run reports one line, not a timer summary.
+        // A failed run reports one line, not a timer summary, and keeps the
+        // files of its finished cycles.
         timer.disable_output();
+        try
+          {
+            background_writer.launch();
+            background_writer.wait();
+          }
+        catch (...)
+          {
+          }
         throw;
       }
   }
@@ -66,7 +75,12 @@ namespace signorini
             write_timings(timings);
           }
         save_checkpoint(cycle, run_time);
+        background_writer.launch();
       }
+    {
+      TimerOutput::Scope t(timer, "Output");
+      background_writer.wait();
+    }
     if (parameters.output.print_timings)
       {
         Utilities::System::MemoryStats memory;
