@@ -33,11 +33,10 @@ namespace signorini
     wait();
     if (batch.empty())
       return;
-    running = std::async(std::launch::async,
-                         [writes = std::move(batch)]() {
-                           for (const auto &write : writes)
-                             write();
-                         });
+    running = std::async(std::launch::async, [writes = std::move(batch)]() {
+      for (const auto &write : writes)
+        write();
+    });
     batch.clear();
   }
 

@@ -65,6 +65,16 @@ namespace signorini
         solve_contact_problem(cycle);
         timings.contact_solve = now() - solve_start;
         estimate_error();
+        // The matrix and its factorisation or AMG are rebuilt on the next
+        // mesh: free them before the output's patches are built, which is
+        // when a large cycle's memory peaked. (The timing table solves
+        // once more on this mesh.)
+        if (!parameters.output.timing_table)
+          {
+            linear_system_solver.reset();
+            system_matrix.clear();
+            matrix_assembled = false;
+          }
         run_time += now() - start;
         timings.run_time = run_time;
         record_statistics(cycle);
