@@ -32,6 +32,17 @@ warp = simple.WarpByVector(Input=reader, Vectors=["POINTS", "displacement"],
                            ScaleFactor=1.0)
 obstacle = simple.XMLUnstructuredGridReader(
     FileName=[directory + "/obstacle.vtu"])
+if dim == 3:
+    # An obstacle height may drop far away outside its support (e.g. -1000
+    # off the indenter): only the part near the body is drawn.
+    depth = bounds[5] - bounds[4]
+    obstacle = simple.Clip(Input=obstacle, ClipType="Plane")
+    obstacle.ClipType.Origin = [0, 0, bounds[4] - 0.5 * depth]
+    obstacle.ClipType.Normal = [0, 0, 1]
+    try:
+        obstacle.Invert = 0
+    except AttributeError:
+        pass
 
 # Vertical exaggeration of long, flat 2D bodies: at least a quarter as high
 # as wide on screen.
@@ -130,10 +141,12 @@ else:
     cz = 0.5 * (bounds[4] + bounds[5])
     size = math.sqrt(sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2
                          for i in range(3)))
+    # From below the contact face, through the half-transparent obstacle,
+    # framing the body alone.
     view.CameraFocalPoint = [cx, cy, cz]
-    view.CameraPosition = [cx + 0.8 * size, cy - 1.6 * size, cz + 0.9 * size]
+    view.CameraPosition = [cx + 0.8 * size, cy - 1.6 * size, cz - 0.7 * size]
     view.CameraViewUp = [0, 0, 1]
-    view.ResetCamera()
+    view.ResetCamera(*bounds)
 simple.Render(view)
 simple.SaveScreenshot(image, view, ImageResolution=[WIDTH, HEIGHT],
                       CompressionLevel=9)
