@@ -43,9 +43,10 @@ class Run:
     process."""
 
 
-def run(work, name, base, settings, check=True):
+def run(work, name, base, settings, check=True, processes=0):
     """Runs `base` (a .prm, relative to the repository) with `settings`
-    {subsection: {entry: value}} overriding it, in work/name."""
+    {subsection: {entry: value}} overriding it, in work/name; under
+    `mpirun -np processes` if processes > 0."""
     folder = os.path.join(work, name)
     os.makedirs(folder, exist_ok=True)
     for old in ("statistics.csv", "timings.csv"):
@@ -65,9 +66,16 @@ def run(work, name, base, settings, check=True):
     with open(prm, "w") as out:
         out.write("\n".join(lines) + "\n")
     print("  " + name, file=sys.stderr)
+    command = [SIGNORINI, prm]
+    env = None
+    if processes > 0:
+        command = ["mpirun", "-np", str(processes)] + command
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_btl_vader_single_copy_mechanism="none")
     start = time.monotonic()
-    process = subprocess.run([SIGNORINI, prm], stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True)
+    process = subprocess.run(command, stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=env)
     result = Run()
     result.wall = time.monotonic() - start
     result.status = process.returncode
@@ -76,9 +84,26 @@ def run(work, name, base, settings, check=True):
         if process.stderr.strip() else ""
     if check and result.status != 0:
         sys.exit("%s: %s failed: %s" % (sys.argv[0], name, result.error))
+    result.timer = timer_sections(result.stdout)
+    match = re.search(r"^Peak memory: (\S+) MB", result.stdout, re.M)
+    result.peak_memory = float(match.group(1)) if match else float("nan")
     result.rows = read_table(os.path.join(folder, "statistics.csv"))
     result.timings = read_table(os.path.join(folder, "timings.csv"))
     return result
+
+
+def timer_sections(text):
+    """The wall times [s] of the timer summary that `Print timings` prints,
+    by section; 'Total' is the whole run inside the program."""
+    sections = {}
+    match = re.search(r"Total wallclock time elapsed since start\s*\|\s*"
+                      r"([0-9.e+-]+)s", text)
+    if match:
+        sections["Total"] = float(match.group(1))
+    for name, seconds in re.findall(
+            r"^\| (\S[^|]*?)\s*\|\s*\d+ \|\s*([0-9.e+-]+)s \|", text, re.M):
+        sections[name] = float(seconds)
+    return sections
 
 
 def write_data(work, name, rows, columns):

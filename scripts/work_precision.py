@@ -43,8 +43,14 @@ SCENES = {
 # P1 on the Hertz scene: the active set on triangles from the geometry
 # prm/hertz_cylinder.geo, Kelly cycles by Gmsh remeshing and global ones
 # (halved sizes): (scene, label, .prm, cycles, cycles in quick mode).
-P1_RUNS = [("hertz", "P1 active set", "prm/hertz_cylinder_p1.prm",
+# (prm/hertz_cylinder_p1.prm, as overrides of the Hertz scene: an included
+# file's includes are found from the including file's folder.)
+P1_RUNS = [("hertz", "P1 active set", "prm/hertz_cylinder.prm",
             {"kelly": 10, "global": 5}, {"kelly": 4, "global": 2})]
+P1_GEOMETRY = {"Type": "gmsh",
+               "Mesh file": os.path.join(common.ROOT, "prm",
+                                         "hertz_cylinder.geo"),
+               "Initial refinement": "0"}
 
 
 def methods(epsilons, quick):
@@ -91,7 +97,8 @@ def sweep(work, quick):
                 continue
             for refinement in ("kelly", "global"):
                 results[(scene, label, refinement)] = run_case(
-                    work, scene, label, p1_prm, dict(extra), refinement,
+                    work, scene, label, p1_prm,
+                    dict(extra, Geometry=P1_GEOMETRY), refinement,
                     (quick_cycles if quick else cycles)[refinement])
     return results
 

@@ -33,6 +33,14 @@ namespace signorini
                       Patterns::Anything(),
                       "Surface load [MPa = N/mm^2] on the traction boundaries: "
                       "'tx; ty[; tz]' as functions of x, y[, z].");
+    prm.declare_entry("Traction resultant",
+                      "",
+                      Patterns::Anything(),
+                      "If set, e.g. '0, 0, -0.375': the force [N] that the "
+                      "traction adds up to. The traction boundaries then "
+                      "carry this force as a uniform traction, the force over "
+                      "their area on each mesh, and Traction is ignored: a "
+                      "load by a force, exact on every mesh.");
     prm.declare_entry("Body force",
                       "0",
                       Patterns::Anything(),
@@ -74,7 +82,17 @@ namespace signorini
     traction     = parse_function<dim>(prm.get("Traction"),
                                    dim,
                                    "Boundary conditions/Traction");
-    body_force   = parse_function<dim>(prm.get("Body force"),
+    traction_resultant.reset();
+    if (!prm.get("Traction resultant").empty())
+      {
+        traction_resultant = parse::point<dim>(prm.get("Traction resultant"),
+                                               "Boundary conditions/Traction "
+                                               "resultant");
+        if (traction_ids.empty())
+          throw InputError("Boundary conditions/Traction resultant",
+                           "needs Traction boundary ids");
+      }
+    body_force = parse_function<dim>(prm.get("Body force"),
                                      dim,
                                      "Boundary conditions/Body force");
     prm.leave_subsection();

@@ -48,9 +48,11 @@ namespace signorini
       Patterns::Bool(),
       "Apply the cheap remedy when a method fails, and report it: active "
       "set cycling is broken by fixing the nodes that flip; penalty Newton "
-      "that oscillates or stalls is continued from a 10 times softer "
+      "that oscillates or stalls is continued from a 1000 times softer "
       "penalty; augmented lagrangian multipliers that converge slowly "
-      "get a stiffer penalty. false: stop with the failure's exit status.");
+      "get a stiffer penalty; a linear solve that CG cannot finish is "
+      "done again with a fresh AMG, then by the direct solver. false: stop "
+      "with the failure's exit status.");
     prm.declare_entry("Complementarity constant",
                       "0",
                       Patterns::Double(0.),

@@ -21,14 +21,17 @@ namespace signorini
     prm.declare_entry("Type",
                       "rectangle",
                       Patterns::Selection(
-                        "rectangle|half ball|quarter disk|gmsh"),
+                        "rectangle|half ball|quarter disk|quarter ball|gmsh"),
                       "Shape of the body: a rectangle (box in 3D); a half ball "
                       "(half-disk in 2D) with its curved face down (boundary "
                       "id 0) and its flat face up (id 1); a quarter disk (2D "
                       "only), the half of a half-disk at x >= Center x, with "
                       "the curved face down (id 0), the flat face up (id 1) "
-                      "and the symmetry line x = Center x (id 2); or a Gmsh "
-                      "mesh file.");
+                      "and the symmetry line x = Center x (id 2); a quarter "
+                      "ball (3D only), the quarter x >= Center x, y >= "
+                      "Center y of a half ball: curved face down (id 0), "
+                      "flat face up (id 1), symmetry planes x = Center x "
+                      "(id 2) and y = Center y (id 3); or a Gmsh mesh file.");
     prm.declare_entry("Lower left corner",
                       "0, 0",
                       Patterns::Anything(),
@@ -63,11 +66,12 @@ namespace signorini
     prm.declare_entry("Center",
                       "0, 1",
                       Patterns::Anything(),
-                      "half ball, quarter disk: center of the flat face [mm].");
+                      "half ball, quarter disk, quarter ball: center of the "
+                      "flat face [mm].");
     prm.declare_entry("Radius",
                       "1",
                       Patterns::Double(0.),
-                      "half ball, quarter disk: radius [mm].");
+                      "half ball, quarter disk, quarter ball: radius [mm].");
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::Anything(),
@@ -94,11 +98,16 @@ namespace signorini
     type                   = name == "rectangle"    ? Type::rectangle :
                              name == "gmsh"         ? Type::gmsh :
                              name == "quarter disk" ? Type::quarter_disk :
+                             name == "quarter ball" ? Type::quarter_ball :
                                                       Type::half_ball;
     if (type == Type::quarter_disk && dim != 2)
       throw InputError("Geometry/Type",
                        "quarter disk is a two-dimensional shape; use half "
                        "ball in 3D");
+    if (type == Type::quarter_ball && dim != 3)
+      throw InputError("Geometry/Type",
+                       "quarter ball is a three-dimensional shape; use "
+                       "quarter disk in 2D");
     if (type == Type::rectangle)
       {
         lower_left   = parse::point<dim>(prm.get("Lower left corner"),
@@ -120,7 +129,8 @@ namespace signorini
                                      GmshOptions::CellType::quadrilateral :
                                      GmshOptions::CellType::automatic;
     mesh_size = prm.get_double("Mesh size");
-    if (type == Type::half_ball || type == Type::quarter_disk)
+    if (type == Type::half_ball || type == Type::quarter_disk ||
+        type == Type::quarter_ball)
       {
         center = parse::point<dim>(prm.get("Center"), "Geometry/Center");
         radius = prm.get_double("Radius");
@@ -223,6 +233,36 @@ namespace signorini
               if (face->at_boundary() && face->boundary_id() == 1 &&
                   std::abs(face->center()[0] - c[0]) < 1e-10 * radius)
                 face->set_boundary_id(2);
+            coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
+            break;
+          }
+        case Type::quarter_ball:
+          {
+            // deal.II's eighth of a ball lies at x, y, z >= 0; turn it about
+            // y so that the curved face points down, move it to Center, and
+            // give the symmetry planes x = Center x and y = Center y their
+            // own ids (the third cut face is the flat top, id 1).
+            GridGenerator::quarter_hyper_ball(coarse_mesh,
+                                              Point<dim>(),
+                                              radius);
+            const Point<dim> c = center;
+            GridTools::transform(
+              [c](const Point<dim> &p) {
+                Point<dim> q = c;
+                q[0] += p[dim - 1];
+                q[1] += p[1];
+                q[dim - 1] -= p[0];
+                return q;
+              },
+              coarse_mesh);
+            for (const auto &face : coarse_mesh.active_face_iterators())
+              if (face->at_boundary() && face->boundary_id() == 1)
+                {
+                  if (std::abs(face->center()[0] - c[0]) < 1e-10 * radius)
+                    face->set_boundary_id(2);
+                  else if (std::abs(face->center()[1] - c[1]) < 1e-10 * radius)
+                    face->set_boundary_id(3);
+                }
             coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
             break;
           }

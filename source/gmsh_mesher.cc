@@ -96,7 +96,7 @@ namespace signorini
           if (dim == 2)
             {
               gmsh::option::setNumber("Mesh.RecombineAll", 1);
-              gmsh::option::setNumber("Mesh.Algorithm", 8);
+              gmsh::option::setNumber("Mesh.Algorithm", 6);
               gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);
             }
           else

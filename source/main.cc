@@ -5,6 +5,9 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Threads: as many as there are cores per process (one process on two
+  // cores estimates errors and builds output patches on both).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(
+    argc, argv, dealii::numbers::invalid_unsigned_int);
   return signorini::run_program(argc, argv);
 }

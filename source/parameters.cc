@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <signorini/parameters.h>
 
 namespace signorini
@@ -21,6 +23,7 @@ namespace signorini
     Refinement::declare_parameters(prm);
     OutputParameters<2>::declare_parameters(prm);
     Reference<2>::declare_parameters(prm);
+    CheckpointParameters::declare_parameters(prm);
   }
 
   template <int dim>
@@ -33,10 +36,12 @@ namespace signorini
     boundary_conditions.parse_parameters(prm);
     obstacle.parse_parameters(prm);
     contact.parse_parameters(prm);
-    linear_solver.parse_parameters(prm, dim);
+    linear_solver.parse_parameters(
+      prm, dim, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
   }
 
   template struct Parameters<2>;

@@ -4,6 +4,7 @@
 
 #include <signorini/contact_problem.h>
 #include <signorini/failures.h>
+#include <signorini/include_check.h>
 #include <signorini/input_error.h>
 #include <signorini/parameters.h>
 #include <signorini/program.h>
@@ -23,6 +24,9 @@ namespace signorini
   {
     const char *usage =
       "Usage: signorini FILE.prm          run the scene described in FILE.prm\n"
+      "       signorini --resume FILE.prm continue after the newest checkpoint\n"
+      "                                    in the output directory (from cycle\n"
+      "                                    0 if there is none)\n"
       "       signorini --print-parameters print every parameter with its\n"
       "                                    default and documentation\n"
       "       signorini --help            show this text\n"
@@ -66,7 +70,7 @@ namespace signorini
 
     template <int dim>
     void
-    run_scene(ParameterHandler &prm, const std::string &file)
+    run_scene(ParameterHandler &prm, const std::string &file, const bool resume)
     {
       Parameters<dim> parameters;
       parameters.parse_parameters(
@@ -88,7 +92,7 @@ namespace signorini
         ContactProblem<dim> problem(parameters, text.str(), MPI_COMM_WORLD);
         try
           {
-            problem.run();
+            problem.run(resume);
           }
         catch (...)
           {
@@ -125,22 +129,24 @@ namespace signorini
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return exit_status::success;
       }
-    if (arguments.size() != 1 || arguments[0].empty() || arguments[0][0] == '-')
+    const bool resume = arguments.size() == 2 && arguments[0] == "--resume";
+    const std::string file = arguments.empty() ? "" : arguments.back();
+    if (arguments.size() != (resume ? 2 : 1) || file.empty() || file[0] == '-')
       {
         err << "signorini: error: expected one parameter file\n" << usage;
         return exit_status::input_error;
       }
 
-    const std::string &file = arguments[0];
     try
       {
         if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
           throw InputError::at(file, "cannot open the parameter file");
+        check_includes(file);
         parse_file(prm, file);
         if (prm.get_integer("Dimension") == 2)
-          run_scene<2>(prm, file);
+          run_scene<2>(prm, file, resume);
         else
-          run_scene<3>(prm, file);
+          run_scene<3>(prm, file, resume);
         return exit_status::success;
       }
     catch (const InputError &error)

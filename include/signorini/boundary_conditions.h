@@ -3,9 +3,11 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/fe/component_mask.h>
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -18,7 +20,9 @@ namespace signorini
    * - `Dirichlet = 0: xy; 1: y` fixes the listed displacement components on
    *   each boundary id (`all` for every component) to `Prescribed
    *   displacement`.
-   * - `Traction` acts on the boundary ids in `Traction boundary ids`.
+   * - `Traction` acts on the boundary ids in `Traction boundary ids`; or,
+   *   with `Traction resultant`, a uniform traction whose resultant is that
+   *   force on every mesh, however faceted its curved boundaries.
    * - `Body force` acts in the whole body.
    *
    * Functions are muparser expressions of x, y[, z], one per component
@@ -32,6 +36,8 @@ namespace signorini
     std::unique_ptr<dealii::FunctionParser<dim>> prescribed_displacement;
     std::set<dealii::types::boundary_id>         traction_ids;
     std::unique_ptr<dealii::FunctionParser<dim>> traction;
+    /** The force [N] the uniform traction adds up to, if given. */
+    std::optional<dealii::Tensor<1, dim>>        traction_resultant;
     std::unique_ptr<dealii::FunctionParser<dim>> body_force;
 
     static void

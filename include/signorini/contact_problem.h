@@ -16,10 +16,14 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <signorini/background_writer.h>
+#include <signorini/cell_stiffness.h>
+#include <signorini/checkpoint.h>
 #include <signorini/linear_system_solver.h>
 #include <signorini/parameters.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -139,15 +143,28 @@ namespace signorini
                    const MPI_Comm         mpi_communicator);
     ~ContactProblem();
 
-    /** All cycles; throws SolverFailure or InputError. */
+    /** All cycles; throws SolverFailure or InputError. With @p resume,
+     * continues after the cycle of the newest checkpoint in the output
+     * directory (from cycle 0 if there is none). */
     void
-    run();
+    run(const bool resume = false);
 
 
   private:
     // run.cc
     void
-    run_cycles();
+    run_cycles(const bool resume);
+
+    // checkpoint.cc
+    /** Takes over the output directory (removing what an earlier run left
+     * that this run does not continue), writes the obstacle and the
+     * parameters, and on @p resume restores the newest checkpoint, adding
+     * its run time to @p run_time. Returns the first cycle to compute. */
+    unsigned int
+    start_output(const bool resume, double &run_time);
+    /** Writes the checkpoint of cycle @p cycle (Output/Checkpoint). */
+    void
+    save_checkpoint(const unsigned int cycle, const double run_time);
 
     // setup.cc
     void
@@ -204,8 +221,11 @@ namespace signorini
     active_set_signature() const;
 
     // solve.cc
+    /** One linear solve of the Newton system; iterative solvers stop at
+     * Linear solver/Tolerance on the @p final_step of an iteration, at the
+     * looser Newton tolerance while the active set may still change. */
     void
-    solve();
+    solve(const bool final_step);
 
     // methods.cc
     /** One cycle's contact problem by the chosen method, with its remedies. */
@@ -257,6 +277,12 @@ namespace signorini
                           dealii::Tensor<1, dim>   &value) const;
     void
     record_statistics(const unsigned int cycle);
+    /** The series' records after the cycles written so far: file name
+     * (solution.pvd, statistics.csv) and text. */
+    std::map<std::string, std::string>
+    series_records() const;
+    /** Writes the cycle's VTU file (on one process in the background, with
+     * the records queued after it) and its records. */
     void
     output_results(const unsigned int cycle);
 
@@ -280,7 +306,7 @@ namespace signorini
     /** Dofs on a Dirichlet boundary in a fixed component: where the
      * support reactions act. */
     dealii::IndexSet support_dofs;
-    /** Translations and rotations, for the AMG (only when it is used). */
+    /** The translations, the AMG's near-null space (when it is used). */
     std::vector<dealii::TrilinosWrappers::MPI::Vector> rigid_body_modes;
 
     /** Hanging nodes and Dirichlet data; fixed within a cycle. */
@@ -288,6 +314,8 @@ namespace signorini
     /** fixed_constraints plus the active contact nodes at the obstacle. */
     dealii::AffineConstraints<double> constraints;
 
+    /** Cell stiffness matrices, computed once per cell shape. */
+    CellStiffness<dim>                     cell_stiffness;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     dealii::TrilinosWrappers::MPI::Vector  system_rhs;
     /** system_rhs without the augmented Lagrangian multipliers' share. */
@@ -297,12 +325,15 @@ namespace signorini
     /** What system_matrix was assembled for: the active set and epsilon;
      * while they stay, the matrix and its factorisation are reused. */
     bool matrix_assembled = false;
-    bool matrix_changed   = true;
     std::pair<std::pair<unsigned int, std::size_t>, double> assembled_for;
     /** Displacement [mm], with ghost entries. */
     dealii::TrilinosWrappers::MPI::Vector solution;
     /** K u - f with the contact set free: the obstacle's nodal force [N]. */
     dealii::TrilinosWrappers::MPI::Vector residual;
+    /** The traction on this mesh: Boundary conditions/Traction, or the
+     * uniform one of the Traction resultant. */
+    const dealii::Function<dim>           *traction = nullptr;
+    std::unique_ptr<dealii::Function<dim>> uniform_traction;
     /** External load vector f [N]. */
     dealii::TrilinosWrappers::MPI::Vector load;
     /** Contact pressure [MPa] at the vertical dofs of contact nodes, with
@@ -326,6 +357,10 @@ namespace signorini
     std::vector<CycleStatistics<dim>>           cycle_statistics;
     std::vector<CycleTimings>                   cycle_timings;
     std::vector<std::pair<double, std::string>> written_cycles;
+    std::unique_ptr<Checkpoint>                 checkpoint;
+    /** Last, so that it is destroyed first: the files being written in the
+     * background refer to the members above. */
+    BackgroundWriter background_writer;
   };
 } // namespace signorini
 

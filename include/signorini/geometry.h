@@ -24,6 +24,10 @@ namespace signorini
    * - `half ball` (a half-disk in 2D) of `Radius` around `Center`, flat face
    *   on top (+y, or +z in 3D), curved face below: boundary id 0 on the curved
    *   face, 1 on the flat one.
+   * - `quarter disk` (2D) and `quarter ball` (3D): the part x >= Center x
+   *   (and y >= Center y in 3D) of the half ball, for symmetric scenes; the
+   *   symmetry lines or planes get ids 2 (x = Center x) and 3 (y = Center
+   *   y).
    * - `gmsh`: a `.msh` file, or a `.geo` geometry meshed by Gmsh when the
    *   run starts (see gmsh_mesher.h) with the `Cell type` and `Mesh size`
    *   asked for; physical groups give boundary ids. Triangles or
@@ -39,6 +43,7 @@ namespace signorini
       rectangle,
       half_ball,
       quarter_disk,
+      quarter_ball,
       gmsh
     };
 

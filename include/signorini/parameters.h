@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/boundary_conditions.h>
+#include <signorini/checkpoint.h>
 #include <signorini/contact_parameters.h>
 #include <signorini/geometry.h>
 #include <signorini/linear_solver.h>
@@ -35,6 +36,7 @@ namespace signorini
     Refinement              refinement;
     OutputParameters<dim>   output;
     Reference<dim>          reference;
+    CheckpointParameters    checkpoint;
 
     /** Reads every component from @p prm; @p prm_directory resolves
      * relative file names. Throws InputError. */

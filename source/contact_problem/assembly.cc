@@ -1,3 +1,4 @@
+#include <deal.II/base/function.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
@@ -39,7 +40,7 @@ namespace signorini
           bc.traction_ids.count(cell->face(f)->boundary_id()))
         {
           fe_face_values.reinit(cell, f);
-          integrate(fe_face_values, *bc.traction);
+          integrate(fe_face_values, *traction);
         }
   }
 
@@ -48,7 +49,8 @@ namespace signorini
   ContactProblem<dim>::assemble_load()
   {
     TimerOutput::Scope t(timer, "Assembly: load");
-    load = 0;
+    load     = 0;
+    traction = nullptr;
 
     FEValues<dim>                        fe_values(*mapping,
                             *fe,
@@ -62,6 +64,34 @@ namespace signorini
                                        update_JxW_values);
     Vector<double>                       cell_load(fe->n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
+
+    // A load by a force: the uniform traction of that resultant on the
+    // traction boundaries of this mesh.
+    const auto &bc = parameters.boundary_conditions;
+    traction       = bc.traction.get();
+    if (bc.traction_resultant)
+      {
+        double area = 0.;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  bc.traction_ids.count(cell->face(f)->boundary_id()))
+                {
+                  fe_face_values.reinit(cell, f);
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    area += fe_face_values.JxW(q);
+                }
+        area = Utilities::MPI::sum(area, mpi_communicator);
+        Vector<double> value(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          value(d) = (*bc.traction_resultant)[d] / area;
+        uniform_traction =
+          std::make_unique<Functions::ConstantFunction<dim>>(value);
+        traction = uniform_traction.get();
+      }
+
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -90,9 +120,12 @@ namespace signorini
     // stay, it and its factorisation are kept, and only the augmented
     // Lagrangian multipliers change the right-hand side.
     const auto key = std::make_pair(active_set_signature(), penalty_parameter);
-    matrix_changed = !matrix_assembled || key != assembled_for;
-    if (matrix_changed)
+    if (!matrix_assembled || key != assembled_for)
       {
+        // An active-set update changes a few rows and columns only.
+        linear_system_solver.matrix_changed(matrix_assembled &&
+                                            active_set_method &&
+                                            key.second == assembled_for.second);
         // Active contact nodes sit on the obstacle: u_n = -gap.
         constraints.clear();
         constraints.reinit(locally_relevant_dofs);
@@ -135,31 +168,15 @@ namespace signorini
                             quadrature,
                             update_gradients | update_JxW_values);
     const unsigned int n = fe->n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(n, n);
     // The right-hand side gets only the lifting of inhomogeneous
     // constraints here; the load vector is added below.
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<SymmetricTensor<2, dim>> strain(n), stress(n);
-    const FEValuesExtractors::Vector     displacement(0);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
-          cell_matrix = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  strain[i] = fe_values[displacement].symmetric_gradient(i, q);
-                  stress[i] =
-                    parameters.material.template stress<dim>(strain[i]);
-                }
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
-                  cell_matrix(i, j) += strain[i] * stress[j] * fe_values.JxW(q);
-            }
+          const auto &cell_matrix = cell_stiffness.matrix(cell, fe_values);
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(
             cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
@@ -220,14 +237,16 @@ namespace signorini
                             quadrature,
                             update_gradients | update_JxW_values);
     const unsigned int                   n = fe->n_dofs_per_cell();
-    Vector<double>                       cell_residual(n);
+    Vector<double>                       cell_residual(n), cell_solution(n);
     std::vector<types::global_dof_index> dof_indices(n);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
-          assemble_cell_internal_force(fe_values, cell_residual);
+          // The internal force K_cell u_cell.
+          cell->get_dof_values(solution, cell_solution);
+          cell_stiffness.matrix(cell, fe_values)
+            .vmult(cell_residual, cell_solution);
           cell->get_dof_indices(dof_indices);
           fixed_constraints.distribute_local_to_global(cell_residual,
                                                        dof_indices,

@@ -27,7 +27,7 @@ namespace signorini
     const auto start = std::chrono::steady_clock::now();
     assemble_load();
     assemble_newton_system();
-    solve();
+    solve(true);
     MPI_Barrier(mpi_communicator);
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

@@ -24,7 +24,7 @@ namespace signorini
         for (auto &node : contact_nodes)
           node.active = false;
         assemble_newton_system();
-        solve();
+        solve(true);
         compute_contact_forces();
         newton_iterations = 1;
         return;

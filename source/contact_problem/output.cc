@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -255,16 +257,61 @@ namespace signorini
     }
   } // namespace
 
+  namespace
+  {
+    /** A cycle's patches with the postprocessors they name: they outlive
+     * output_results() while the VTU file is written in the background. */
+    template <int dim>
+    struct Patches
+    {
+      Patches(const Material &material, const Obstacle<dim> &obstacle)
+        : stress(material)
+        , gap(obstacle)
+        , contact_pressure("contact_pressure")
+        , active_set("active_set")
+      {
+      }
+
+      const StressPostprocessor<dim> stress;
+      const GapPostprocessor<dim>    gap;
+      const VerticalComponent<dim>   contact_pressure;
+      const VerticalComponent<dim>   active_set;
+      /** The active set as a vector with ghost entries, and each cell's
+       * MPI rank. */
+      TrilinosWrappers::MPI::Vector active;
+      Vector<float>                 ranks;
+      DataOut<dim>                  data_out;
+    };
+  } // namespace
+
+  template <int dim>
+  std::map<std::string, std::string>
+  ContactProblem<dim>::series_records() const
+  {
+    std::ostringstream pvd, statistics;
+    DataOutBase::write_pvd_record(pvd, written_cycles);
+    write_statistics(statistics,
+                     cycle_statistics,
+                     parameters.reference,
+                     parameters.contact.method);
+    return {{"solution.pvd", pvd.str()}, {"statistics.csv", statistics.str()}};
+  }
+
   template <int dim>
   void
   ContactProblem<dim>::output_results(const unsigned int cycle)
   {
     TimerOutput::Scope t(timer, "Output");
+    // The previous cycle's files are written by now (they had its whole
+    // computation to be).
+    background_writer.wait();
     const unsigned int rank =
       Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
 
+    const auto patches =
+      std::make_shared<Patches<dim>>(parameters.material, parameters.obstacle);
     TrilinosWrappers::MPI::Vector owned_active(locally_owned_dofs,
                                                mpi_communicator);
     if (parameters.contact.method != ContactParameters::Method::none)
@@ -272,12 +319,14 @@ namespace signorini
         if (node.owned && node.active)
           owned_active(node.dofs[dim - 1]) = 1.;
     owned_active.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector active(locally_owned_dofs,
-                                         locally_relevant_dofs,
-                                         mpi_communicator);
-    active = owned_active;
+    patches->active.reinit(locally_owned_dofs,
+                           locally_relevant_dofs,
+                           mpi_communicator);
+    patches->active = owned_active;
+    patches->ranks.reinit(triangulation->n_active_cells());
+    patches->ranks = static_cast<float>(rank);
 
-    DataOut<dim> data_out;
+    DataOut<dim> &data_out = patches->data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(
       solution,
@@ -285,36 +334,49 @@ namespace signorini
       DataOut<dim>::type_dof_data,
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_part_of_vector));
-    const StressPostprocessor<dim> stress(parameters.material);
-    const GapPostprocessor<dim>    gap(parameters.obstacle);
-    const VerticalComponent<dim>   contact_pressure("contact_pressure");
-    const VerticalComponent<dim>   active_set("active_set");
-    data_out.add_data_vector(solution, stress);
-    data_out.add_data_vector(solution, gap);
-    data_out.add_data_vector(pressure, contact_pressure);
-    data_out.add_data_vector(active, active_set);
+    data_out.add_data_vector(solution, patches->stress);
+    data_out.add_data_vector(solution, patches->gap);
+    data_out.add_data_vector(pressure, patches->contact_pressure);
+    data_out.add_data_vector(patches->active, patches->active_set);
     data_out.add_data_vector(estimated_error_per_cell, "kelly_indicator");
-    Vector<float> ranks(triangulation->n_active_cells());
-    ranks = static_cast<float>(rank);
-    data_out.add_data_vector(ranks, "mpi_rank");
+    data_out.add_data_vector(patches->ranks, "mpi_rank");
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     data_out.build_patches(*mapping);
 
     const std::string &directory = parameters.output.directory;
     const std::string  base = "solution-" + Utilities::int_to_string(cycle, 2);
-    write_collectively(mpi_communicator, [&]() {
-      const std::string piece =
-        n_ranks == 1 ? base : base + "." + Utilities::int_to_string(rank, 4);
-      write_atomically(directory + "/" + piece + ".vtu",
-                       [&](std::ostream &out) { data_out.write_vtu(out); });
-    });
-
-    const std::string name = base + (n_ranks == 1 ? ".vtu" : ".pvtu");
+    const std::string  name = base + (n_ranks == 1 ? ".vtu" : ".pvtu");
     written_cycles.emplace_back(cycle, name);
-    write_collectively(mpi_communicator, [&]() {
-      if (rank != 0)
-        return;
-      if (n_ranks > 1)
-        {
+    const auto records       = series_records();
+    const auto write_records = [directory, records]() {
+      for (const auto &[file, text] : records)
+        write_atomically(directory + "/" + file,
+                         [&](std::ostream &out) { out << text; });
+    };
+
+    if (n_ranks == 1)
+      {
+        // In the background: the VTU file, then the records that list it
+        // (run_cycles launches them after the checkpoint is queued).
+        background_writer.add([patches, directory, name]() {
+          write_atomically(directory + "/" + name, [&](std::ostream &out) {
+            patches->data_out.write_vtu(out);
+          });
+        });
+        background_writer.add(write_records);
+      }
+    else
+      {
+        write_collectively(mpi_communicator, [&]() {
+          write_atomically(directory + "/" + base + "." +
+                             Utilities::int_to_string(rank, 4) + ".vtu",
+                           [&](std::ostream &out) { data_out.write_vtu(out); });
+        });
+        write_collectively(mpi_communicator, [&]() {
+          if (rank != 0)
+            return;
           std::vector<std::string> pieces;
           for (unsigned int r = 0; r < n_ranks; ++r)
             pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
@@ -322,17 +384,9 @@ namespace signorini
           write_atomically(directory + "/" + name, [&](std::ostream &out) {
             data_out.write_pvtu_record(out, pieces);
           });
-        }
-      write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
-        DataOutBase::write_pvd_record(out, written_cycles);
-      });
-      write_atomically(directory + "/statistics.csv", [&](std::ostream &out) {
-        write_statistics(out,
-                         cycle_statistics,
-                         parameters.reference,
-                         parameters.contact.method);
-      });
-    });
+          write_records();
+        });
+      }
     if (parameters.output.contact_pressure_table)
       write_collectively(mpi_communicator,
                          [&]() { write_contact_pressure_table(cycle); });

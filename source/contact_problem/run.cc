@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <signorini/contact_problem.h>
 
 #include <chrono>
@@ -8,23 +10,32 @@ namespace signorini
 
   template <int dim>
   void
-  ContactProblem<dim>::run()
+  ContactProblem<dim>::run(const bool resume)
   {
     try
       {
-        run_cycles();
+        run_cycles(resume);
       }
     catch (...)
       {
-        // A failed run reports one line, not a timer summary.
+        // A failed run reports one line, not a timer summary, and keeps the
+        // files of its finished cycles.
         timer.disable_output();
+        try
+          {
+            background_writer.launch();
+            background_writer.wait();
+          }
+        catch (...)
+          {
+          }
         throw;
       }
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::run_cycles()
+  ContactProblem<dim>::run_cycles(const bool resume)
   {
     // Wall time on the slowest process.
     const auto now = [this]() {
@@ -37,8 +48,9 @@ namespace signorini
     make_grid();
     setup_system();
     run_time += now() - start;
-    write_obstacle_and_parameters();
-    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
+    const unsigned int first_cycle = start_output(resume, run_time);
+    for (unsigned int cycle = first_cycle;
+         cycle < parameters.refinement.n_cycles;
          ++cycle)
       {
         CycleTimings timings;
@@ -53,6 +65,16 @@ namespace signorini
         solve_contact_problem(cycle);
         timings.contact_solve = now() - solve_start;
         estimate_error();
+        // The matrix and its factorisation or AMG are rebuilt on the next
+        // mesh: free them before the output's patches are built, which is
+        // when a large cycle's memory peaked. (The timing table solves
+        // once more on this mesh.)
+        if (!parameters.output.timing_table)
+          {
+            linear_system_solver.reset();
+            system_matrix.clear();
+            matrix_assembled = false;
+          }
         run_time += now() - start;
         timings.run_time = run_time;
         record_statistics(cycle);
@@ -62,15 +84,34 @@ namespace signorini
             timings.linear_solve = time_linear_solve();
             write_timings(timings);
           }
+        save_checkpoint(cycle, run_time);
+        background_writer.launch();
+      }
+    {
+      TimerOutput::Scope t(timer, "Output");
+      background_writer.wait();
+    }
+    if (parameters.output.print_timings)
+      {
+        Utilities::System::MemoryStats memory;
+        Utilities::System::get_memory_stats(memory);
+        const double peak =
+          Utilities::MPI::sum(static_cast<double>(memory.VmHWM),
+                              mpi_communicator) /
+          1024.;
+        pcout << "Peak memory: " << number(peak) << " MB on "
+              << Utilities::MPI::n_mpi_processes(mpi_communicator)
+              << " processes, " << number(peak * 1024. / dof_handler.n_dofs())
+              << " kB per dof of the final mesh" << std::endl;
       }
   }
 
   template void
-  ContactProblem<2>::run_cycles();
+  ContactProblem<2>::run_cycles(bool);
   template void
-  ContactProblem<3>::run_cycles();
+  ContactProblem<3>::run_cycles(bool);
   template void
-  ContactProblem<2>::run();
+  ContactProblem<2>::run(bool);
   template void
-  ContactProblem<3>::run();
+  ContactProblem<3>::run(bool);
 } // namespace signorini

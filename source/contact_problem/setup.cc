@@ -34,7 +34,11 @@ namespace signorini
             parameters.output.print_timings ? TimerOutput::summary :
                                               TimerOutput::never,
             TimerOutput::wall_times)
-    , linear_system_solver(parameters.linear_solver)
+    , cell_stiffness(parameters.material)
+    , linear_system_solver(parameters.linear_solver,
+                           parameters.contact.remedies,
+                           pcout,
+                           timer)
   {
   }
 
@@ -148,8 +152,10 @@ namespace signorini
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
     sparsity.compress();
-    system_matrix.reinit(sparsity);
+    // The solver's factorisation refers to the old matrix: drop it first.
     linear_system_solver.reset();
+    system_matrix.reinit(sparsity);
+    cell_stiffness.clear();
     matrix_assembled = false;
 
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
@@ -181,10 +187,10 @@ namespace signorini
   void
   ContactProblem<dim>::setup_rigid_body_modes()
   {
-    // Translations along each axis, and rotations about each axis (one in
-    // 2D, three in 3D): the displacements that cost no strain energy. Q1 and
-    // P1 have all their dofs at vertices.
-    const unsigned int n_modes = dim == 2 ? 3 : 6;
+    // Translations along each axis: with the vertices aggregated whole, the
+    // near-null space ML needs (see LinearSystemSolver). Q1 and P1 have all
+    // their dofs at vertices.
+    const unsigned int n_modes = dim;
     rigid_body_modes.assign(n_modes,
                             TrilinosWrappers::MPI::Vector(locally_owned_dofs,
                                                           mpi_communicator));
@@ -192,25 +198,12 @@ namespace signorini
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
           {
-            const Point<dim> &p = cell->vertex(v);
             for (unsigned int d = 0; d < dim; ++d)
               {
                 const auto i = cell->vertex_dof_index(v, d);
                 if (!locally_owned_dofs.is_element(i))
                   continue;
                 rigid_body_modes[d](i) = 1.;
-                // rotation about z: (-y, x, 0)
-                rigid_body_modes[dim](i) = d == 0 ? -p[1] : d == 1 ? p[0] : 0.;
-                if (dim == 3)
-                  {
-                    // about x: (0, -z, y); about y: (z, 0, -x)
-                    rigid_body_modes[4](i) = d == 1 ? -p[dim - 1] :
-                                             d == 2 ? p[1] :
-                                                      0.;
-                    rigid_body_modes[5](i) = d == 0 ? p[dim - 1] :
-                                             d == 2 ? -p[0] :
-                                                      0.;
-                  }
               }
           }
     for (auto &mode : rigid_body_modes)

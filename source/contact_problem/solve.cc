@@ -11,18 +11,21 @@ namespace signorini
 
   template <int dim>
   void
-  ContactProblem<dim>::solve()
+  ContactProblem<dim>::solve(const bool final_step)
   {
-    TimerOutput::Scope            t(timer, "Solve: linear system");
     TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
                                               mpi_communicator);
     distributed = solution; // a warm start for the iterative solver
     constraints.set_zero(distributed);
     try
       {
-        if (matrix_changed)
-          linear_system_solver.prepare(system_matrix, rigid_body_modes);
-        linear_system_solver.solve(system_matrix, distributed, system_rhs);
+        const auto &linear = parameters.linear_solver;
+        linear_system_solver.solve(system_matrix,
+                                   distributed,
+                                   system_rhs,
+                                   rigid_body_modes,
+                                   final_step ? linear.tolerance :
+                                                linear.newton_tolerance);
       }
     catch (const SolverFailure &failure)
       {
@@ -68,17 +71,21 @@ namespace signorini
       active_set_signature()};
     double       previous_residual = 0.;
     unsigned int previous_changes  = 1;
+    // Inexact Newton: the linear solves are loose while the active set
+    // still changes, and tight once an update left it as it was.
+    bool settled = contact.method == ContactParameters::Method::none;
     for (unsigned int iteration = 1; iteration <= contact.max_iterations;
          ++iteration)
       {
         const bool contact_free = visited.back().first == 0;
         assemble_newton_system();
-        solve();
+        solve(settled);
         ++newton_iterations;
         const double       residual_norm = compute_contact_forces();
         const unsigned int changes =
           contact_free ? activate_first_contact() : update_active_set();
         const auto signature = active_set_signature();
+        settled              = changes == 0;
 
         if (parameters.output.verbose)
           {
@@ -171,9 +178,9 @@ namespace signorini
   }
 
   template void
-  ContactProblem<2>::solve();
+  ContactProblem<2>::solve(bool);
   template void
-  ContactProblem<3>::solve();
+  ContactProblem<3>::solve(bool);
   template void
   ContactProblem<2>::solve_newton(unsigned int);
   template void

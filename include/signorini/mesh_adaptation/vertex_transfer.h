@@ -57,10 +57,10 @@ namespace signorini
     std::vector<std::vector<double>> values;
     /** The old cells' bounding boxes, and a tree to search them. */
     std::vector<dealii::BoundingBox<dim>> boxes;
-    using Tree =
-      dealii::RTree<std::size_t,
-            boost::geometry::index::linear<16>,
-            dealii::IndexableGetterFromIndices<std::vector<dealii::BoundingBox<dim>>>>;
+    using Tree = dealii::RTree<std::size_t,
+                               boost::geometry::index::linear<16>,
+                               dealii::IndexableGetterFromIndices<
+                                 std::vector<dealii::BoundingBox<dim>>>>;
     std::unique_ptr<Tree> tree;
   };
 } // namespace signorini

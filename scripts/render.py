@@ -1,0 +1,153 @@
+"""Renders a scene's final cycle: the body warped by its displacement (true
+scale), coloured by the von Mises stress with a legend in MPa, over the
+obstacle, with a caption. 2D scenes much longer than high are drawn with a
+vertical exaggeration (body and obstacle alike, so contact stays contact),
+stated in the caption.
+
+    pvpython render.py OUTPUT_DIRECTORY IMAGE.png TITLE
+
+Run by scripts/render (headless, under xvfb-run).
+"""
+import math
+import sys
+
+from paraview import simple
+
+directory, image, title = sys.argv[1:4]
+WIDTH, HEIGHT = 800, 400
+
+reader = simple.PVDReader(FileName=directory + "/solution.pvd")
+times = list(reader.TimestepValues) or [0.]
+n_cycles = len(times)
+simple.GetAnimationScene().AnimationTime = times[-1]
+reader.UpdatePipeline(times[-1])
+data = simple.servermanager.Fetch(reader)
+if data.IsA("vtkMultiBlockDataSet"):
+    data = data.GetBlock(0)
+bounds = data.GetBounds()
+dim = 3 if bounds[5] - bounds[4] > 1e-12 else 2
+n_cells = data.GetNumberOfCells()
+
+warp = simple.WarpByVector(Input=reader, Vectors=["POINTS", "displacement"],
+                           ScaleFactor=1.0)
+obstacle = simple.XMLUnstructuredGridReader(
+    FileName=[directory + "/obstacle.vtu"])
+if dim == 3:
+    # An obstacle height may drop far away outside its support (e.g. -1000
+    # off the indenter): only the part near the body is drawn.
+    depth = bounds[5] - bounds[4]
+    obstacle = simple.Clip(Input=obstacle, ClipType="Plane")
+    obstacle.ClipType.Origin = [0, 0, bounds[4] - 0.5 * depth]
+    obstacle.ClipType.Normal = [0, 0, 1]
+    try:
+        obstacle.Invert = 0
+    except AttributeError:
+        pass
+
+# Vertical exaggeration of long, flat 2D bodies: at least a quarter as high
+# as wide on screen.
+width, height = bounds[1] - bounds[0], bounds[3] - bounds[2]
+exaggeration = 1
+if dim == 2 and height > 0:
+    exaggeration = max(1, min(5, int(round(0.25 * width / height))))
+scale = [1.0, float(exaggeration), 1.0]
+
+view = simple.CreateView("RenderView")
+view.ViewSize = [WIDTH, HEIGHT]
+view.Background = [1, 1, 1]
+try:
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+view.OrientationAxesVisibility = 0
+
+body = simple.Show(warp, view)
+body.Scale = scale
+simple.ColorBy(body, ("POINTS", "von_mises"))
+lut = simple.GetColorTransferFunction("von_mises")
+lut.ApplyPreset("Viridis (matplotlib)", True)
+# Stress concentrations at corners and contact edges would take the whole
+# colour range: it ends where only 1 % of the body's area (volume) is more
+# stressed.
+cells = simple.CellSize(Input=simple.PointDatatoCellData(Input=reader))
+cells.UpdatePipeline(times[-1])
+cell_data = simple.servermanager.Fetch(cells)
+if cell_data.IsA("vtkMultiBlockDataSet"):
+    cell_data = cell_data.GetBlock(0)
+stress = cell_data.GetCellData().GetArray("von_mises")
+size = cell_data.GetCellData().GetArray("Volume" if dim == 3 else "Area")
+pairs = sorted((stress.GetValue(i), size.GetValue(i))
+               for i in range(stress.GetNumberOfTuples()))
+total, running, top = sum(a for _, a in pairs), 0., pairs[-1][0]
+for value, area in pairs:
+    running += area
+    if running >= 0.99 * total:
+        top = value
+        break
+values = [pairs[0][0], pairs[-1][0]]
+lut.RescaleTransferFunction(values[0], top)
+lut.AutomaticRescaleRangeMode = "Never"
+bar = simple.GetScalarBar(lut, view)
+bar.Title = "von Mises stress [MPa]"
+bar.ComponentTitle = ""
+bar.TitleColor = bar.LabelColor = [0, 0, 0]
+bar.TitleFontSize = bar.LabelFontSize = 14
+bar.RangeLabelFormat = "%.3g"
+bar.WindowLocation = "Any Location"
+bar.Orientation = "Horizontal"
+bar.Position = [0.55, 0.04]
+bar.ScalarBarLength = 0.4
+body.SetScalarBarVisibility(view, True)
+
+ground = simple.Show(obstacle, view)
+ground.Scale = scale
+ground.AmbientColor = ground.DiffuseColor = [0.35, 0.35, 0.35]
+if dim == 2:
+    ground.SetRepresentationType("Wireframe")
+    ground.LineWidth = 4
+else:
+    ground.Opacity = 0.5
+
+caption = "%s: cycle %d, %d cells; displacement to scale" % (
+    title, n_cycles - 1, n_cells)
+caption_2 = ("colour scale ends where 1 %% of the body is more stressed "
+             "(max %.3g MPa)" % values[-1])
+if exaggeration > 1:
+    caption += ", vertical scale x%d" % exaggeration
+text = simple.Text(Text=caption + "\n" + caption_2)
+label = simple.Show(text, view)
+label.Color = [0, 0, 0]
+label.FontSize = 14
+label.WindowLocation = "Upper Left Corner"
+label.Justification = "Left"
+
+# The camera frames the body and a little of the obstacle around it (after
+# the first render, which resets the camera).
+simple.Render(view)
+view.CameraParallelProjection = 1
+cx, cy = 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3])
+if dim == 2:
+    view.CameraPosition = [cx, cy * exaggeration, 10 * width]
+    view.CameraFocalPoint = [cx, cy * exaggeration, 0]
+    view.CameraViewUp = [0, 1, 0]
+    # Room for the caption above and the legend below.
+    half_height = 0.5 * height * exaggeration
+    parallel_scale = max(2.0 * half_height, 0.56 * width * HEIGHT / WIDTH)
+    view.CameraParallelScale = parallel_scale
+    focus = cy * exaggeration - 0.15 * parallel_scale
+    view.CameraFocalPoint = [cx, focus, 0]
+    view.CameraPosition = [cx, focus, 10 * width]
+else:
+    cz = 0.5 * (bounds[4] + bounds[5])
+    size = math.sqrt(sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2
+                         for i in range(3)))
+    # From below the contact face, through the half-transparent obstacle,
+    # framing the body alone.
+    view.CameraFocalPoint = [cx, cy, cz]
+    view.CameraPosition = [cx + 0.8 * size, cy - 1.6 * size, cz - 0.7 * size]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera(*bounds)
+simple.Render(view)
+simple.SaveScreenshot(image, view, ImageResolution=[WIDTH, HEIGHT],
+                      CompressionLevel=9)
+print("wrote %s (%s)" % (image, caption))
