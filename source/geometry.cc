@@ -90,8 +90,8 @@ namespace signorini
 
   template <int dim>
   void
-  Geometry<dim>::parse_parameters(ParameterHandler  &prm,
-                                  const std::string &prm_directory)
+  Geometry<dim>::parse_parameters(ParameterHandler               &prm,
+                                  const std::vector<std::string> &folders)
   {
     prm.enter_subsection("Geometry");
     const std::string name = prm.get("Type");
@@ -143,7 +143,18 @@ namespace signorini
         if (mesh_file.empty())
           throw InputError("Geometry/Mesh file", "is required for Type = gmsh");
         if (mesh_file[0] != '/')
-          mesh_file = prm_directory + "/" + mesh_file;
+          {
+            // The first folder that holds it (else the first, for the
+            // error below).
+            const std::string name = mesh_file;
+            mesh_file              = folders.front() + "/" + name;
+            for (const auto &folder : folders)
+              if (std::ifstream(folder + "/" + name))
+                {
+                  mesh_file = folder + "/" + name;
+                  break;
+                }
+          }
         if (!std::ifstream(mesh_file))
           throw InputError("Geometry/Mesh file",
                            "cannot open '" + mesh_file + "'");

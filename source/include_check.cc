@@ -3,6 +3,7 @@
 #include <signorini/include_check.h>
 #include <signorini/input_error.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <vector>
@@ -75,7 +76,8 @@ namespace signorini
     visit(const fs::path           &folder,
           const std::string        &shown_file,
           std::vector<fs::path>    &chain,
-          std::vector<std::string> &shown)
+          std::vector<std::string> &shown,
+          std::vector<std::string> &folders)
     {
       std::ifstream in(chain.back());
       for (const auto &include : find_includes(in))
@@ -108,22 +110,28 @@ namespace signorini
                                      what + " forms a cycle of includes: " +
                                        cycle + target_shown);
               }
+          const std::string included = canonical.parent_path().string();
+          if (std::find(folders.begin(), folders.end(), included) ==
+              folders.end())
+            folders.push_back(included);
           chain.push_back(canonical);
           shown.push_back(target_shown);
-          visit(folder, target_shown, chain, shown);
+          visit(folder, target_shown, chain, shown, folders);
           chain.pop_back();
           shown.pop_back();
         }
     }
   } // namespace
 
-  void
+  std::vector<std::string>
   check_includes(const std::string &file)
   {
     std::error_code          error;
     const fs::path           path = fs::absolute(file);
     std::vector<fs::path>    chain{fs::weakly_canonical(path, error)};
     std::vector<std::string> shown{file};
-    visit(path.parent_path(), file, chain, shown);
+    std::vector<std::string> folders;
+    visit(path.parent_path(), file, chain, shown, folders);
+    return folders;
   }
 } // namespace signorini

@@ -28,10 +28,10 @@ namespace signorini
 
   template <int dim>
   void
-  Parameters<dim>::parse_parameters(ParameterHandler  &prm,
-                                    const std::string &prm_directory)
+  Parameters<dim>::parse_parameters(ParameterHandler               &prm,
+                                    const std::vector<std::string> &folders)
   {
-    geometry.parse_parameters(prm, prm_directory);
+    geometry.parse_parameters(prm, folders);
     material.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
     obstacle.parse_parameters(prm);

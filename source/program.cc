@@ -70,11 +70,20 @@ namespace signorini
 
     template <int dim>
     void
-    run_scene(ParameterHandler &prm, const std::string &file, const bool resume)
+    run_scene(ParameterHandler               &prm,
+              const std::string              &file,
+              const std::vector<std::string> &included_folders,
+              const bool                      resume)
     {
+      // Relative file names in entries: from the parameter file's folder,
+      // else from the folders of the files it includes.
+      std::vector<std::string> folders{
+        std::filesystem::absolute(file).parent_path().string()};
+      folders.insert(folders.end(),
+                     included_folders.begin(),
+                     included_folders.end());
       Parameters<dim> parameters;
-      parameters.parse_parameters(
-        prm, std::filesystem::absolute(file).parent_path().string());
+      parameters.parse_parameters(prm, folders);
       // parameters.prm is to run again from anywhere: name the mesh file by
       // its absolute path.
       if (parameters.geometry.type == Geometry<dim>::Type::gmsh)
@@ -141,12 +150,12 @@ namespace signorini
       {
         if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
           throw InputError::at(file, "cannot open the parameter file");
-        check_includes(file);
+        const auto included = check_includes(file);
         parse_file(prm, file);
         if (prm.get_integer("Dimension") == 2)
-          run_scene<2>(prm, file, resume);
+          run_scene<2>(prm, file, included, resume);
         else
-          run_scene<3>(prm, file, resume);
+          run_scene<3>(prm, file, included, resume);
         return exit_status::success;
       }
     catch (const InputError &error)

@@ -63,10 +63,11 @@ namespace signorini
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /** @p prm_directory resolves a relative `Mesh file`. */
+    /** A relative `Mesh file` is looked for in @p folders, in order (the
+     * parameter file's folder, then those of the files it includes). */
     void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const std::string        &prm_directory);
+    parse_parameters(dealii::ParameterHandler       &prm,
+                     const std::vector<std::string> &folders);
 
     /** Whether `Mesh file` is a Gmsh geometry (.geo) meshed at run time,
      * which can be remeshed. */

@@ -2,6 +2,7 @@
 #define signorini_include_check_h
 
 #include <string>
+#include <vector>
 
 namespace signorini
 {
@@ -18,8 +19,11 @@ namespace signorini
    * an include that closes a cycle, names a directory, or names a file that
    * cannot be opened. FILE is @p file for the top file and the included
    * file's path from the current folder otherwise.
+   *
+   * Returns the folders of the included files, in the order they are
+   * included, each once.
    */
-  void
+  std::vector<std::string>
   check_includes(const std::string &file);
 } // namespace signorini
 

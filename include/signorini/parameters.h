@@ -15,6 +15,7 @@
 #include <signorini/refinement.h>
 
 #include <string>
+#include <vector>
 
 namespace signorini
 {
@@ -38,11 +39,11 @@ namespace signorini
     Reference<dim>          reference;
     CheckpointParameters    checkpoint;
 
-    /** Reads every component from @p prm; @p prm_directory resolves
-     * relative file names. Throws InputError. */
+    /** Reads every component from @p prm; relative file names are looked
+     * for in @p folders, in order. Throws InputError. */
     void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const std::string        &prm_directory);
+    parse_parameters(dealii::ParameterHandler       &prm,
+                     const std::vector<std::string> &folders);
   };
 } // namespace signorini
 
