@@ -28,9 +28,10 @@ namespace signorini
                       Patterns::Double(0.),
                       "amg cg: residual reduction, relative to the "
                       "right-hand side, of the Newton steps taken while the "
-                      "active set still changes (an inexact Newton method); "
-                      "once an update leaves the active set as it was, the "
-                      "next step is solved to Tolerance.");
+                      "active set still changes (an inexact Newton method), "
+                      "and by a factor of 10 at least; once an update "
+                      "leaves the active set as it was, the next step is "
+                      "solved to Tolerance.");
     prm.declare_entry("Maximum iterations",
                       "2000",
                       Patterns::Integer(1),

@@ -4,6 +4,7 @@
 
 #include <signorini/failures.h>
 #include <signorini/linear_system_solver.h>
+#include <signorini/memory.h>
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
@@ -119,16 +120,16 @@ namespace signorini
   }
 
   void
-  LinearSystemSolver::build_amg(
-    const TrilinosWrappers::SparseMatrix             &matrix,
-    const std::vector<TrilinosWrappers::MPI::Vector> &modes)
+  LinearSystemSolver::build_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                                const unsigned int components)
   {
     TimerOutput::Scope t(timer, "Solve: AMG setup");
     amg.reset();
+    // The setup's peak comes on top of what the assembly left free.
+    release_free_memory();
     try
       {
-        // ML's parameters as deal.II sets them for an elliptic problem, with
-        // the translations as near-null space.
+        // ML's parameters as deal.II sets them for an elliptic problem.
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic              = true;
         data.higher_order_elements = false;
@@ -137,23 +138,31 @@ namespace signorini
         Teuchos::ParameterList              ml_parameters;
         std::unique_ptr<Epetra_MultiVector> unused;
         data.set_parameters(ml_parameters, unused, matrix);
-        const auto        &map = matrix.trilinos_matrix().DomainMap();
-        Epetra_MultiVector null_space(map, modes.size());
-        for (unsigned int k = 0; k < modes.size(); ++k)
-          for (int i = 0; i < map.NumMyElements(); ++i)
-            null_space[k][i] = modes[k].trilinos_vector()[0][i];
-        ml_parameters.set("null space: type", "pre-computed");
-        ml_parameters.set("null space: dimension", null_space.NumVectors());
-        ml_parameters.set("null space: vectors", null_space.Values());
-        // Aggregate whole vertices, all displacement components together.
+        // Aggregate whole vertices, all displacement components together,
+        // with ML's default near-null space for them: the translations.
         // (deal.II leaves ML's default of one equation per node, which
         // aggregates single components: CG needed many times the
-        // iterations, and failed on bodies held by contact alone.) With
-        // whole vertices, adding the rotations to the near-null space made
-        // the hierarchy twice as costly in time and memory (3D, 165k dofs:
-        // setup 2.97 s against 1.43 s, peak 5.1 against 3.9 kB per dof)
-        // and CG no faster.
-        ml_parameters.set("PDE equations", static_cast<int>(modes.size()));
+        // iterations, and failed on bodies held by contact alone.) Adding
+        // the rotations made the hierarchy twice as costly in time and
+        // memory (3D, 165k dofs: setup 2.97 s against 1.43 s, peak 5.1
+        // against 3.9 kB per dof) and CG no faster.
+        ml_parameters.set("PDE equations", static_cast<int>(components));
+        ml_parameters.set("null space: type", "default vectors");
+        // In 3D, unsmoothed aggregation with W-cycles. Smoothing the
+        // prolongator gives A P some 80 nonzeros per row, which ML's
+        // Galerkin product holds twice: the setup peaked at 1.4 kB per dof
+        // on top of the matrix (indentation scene, 493k dofs, one
+        // process: peak 1.58 GB; unsmoothed 1.19 to 1.23 GB). Unsmoothed,
+        // a V-cycle needs twice the CG iterations (39 against 20 for 8
+        // digits); a W-cycle, almost free where each level has 1/27 of the
+        // unknowns of the one above, takes 33, and the setup costs a third.
+        // In 2D, where memory is no concern, the smoothed V-cycles measured
+        // before stay.
+        if (components == 3)
+          {
+            ml_parameters.set("aggregation: damping factor", 0.);
+            ml_parameters.set("prec type", "MGW");
+          }
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
         amg->initialize(matrix, ml_parameters);
       }
@@ -173,8 +182,22 @@ namespace signorini
                                const double relative_tolerance)
   {
     TimerOutput::Scope t(timer, "Solve: CG");
-    SolverControl      control(parameters.max_iterations,
-                          relative_tolerance * rhs.l2_norm());
+    double             tolerance = relative_tolerance * rhs.l2_norm();
+    if (relative_tolerance > parameters.tolerance)
+      {
+        // A loose Newton step reduces its initial residual by a digit at
+        // least: after an update of a few contact nodes the warm start may
+        // already meet the loose tolerance, and a step without a solve
+        // would leave the active set as it was and end the loose steps
+        // early (indentation at 1.49M dofs: a tight solve, then 8 more
+        // nodes, then another tight solve).
+        TrilinosWrappers::MPI::Vector residual(rhs);
+        matrix.vmult(residual, solution);
+        residual -= rhs;
+        tolerance = std::max(parameters.tolerance * rhs.l2_norm(),
+                             std::min(tolerance, 0.1 * residual.l2_norm()));
+      }
+    SolverControl control(parameters.max_iterations, tolerance);
     try
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
@@ -203,12 +226,11 @@ namespace signorini
   }
 
   unsigned int
-  LinearSystemSolver::solve(
-    const TrilinosWrappers::SparseMatrix             &matrix,
-    TrilinosWrappers::MPI::Vector                    &solution,
-    const TrilinosWrappers::MPI::Vector              &rhs,
-    const std::vector<TrilinosWrappers::MPI::Vector> &modes,
-    const double                                      relative_tolerance)
+  LinearSystemSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                            TrilinosWrappers::MPI::Vector        &solution,
+                            const TrilinosWrappers::MPI::Vector  &rhs,
+                            const unsigned int                    components,
+                            const double relative_tolerance)
   {
     if (parameters.type == LinearSolver::Type::direct)
       {
@@ -216,11 +238,10 @@ namespace signorini
         return 1;
       }
 
-    const TrilinosWrappers::MPI::Vector initial_guess = solution;
     try
       {
         if (!amg)
-          build_amg(matrix, modes);
+          build_amg(matrix, components);
         return solve_cg(matrix, solution, rhs, relative_tolerance);
       }
     catch (const SolverFailure &failure)
@@ -232,10 +253,11 @@ namespace signorini
             pcout << "   remedy: " << failure.what()
                   << " with the kept AMG; solved again with a fresh one"
                   << std::endl;
-            solution = initial_guess;
+            // The failed iterate is no warm start.
+            solution = 0.;
             try
               {
-                build_amg(matrix, modes);
+                build_amg(matrix, components);
                 return solve_cg(matrix, solution, rhs, relative_tolerance);
               }
             catch (const SolverFailure &)

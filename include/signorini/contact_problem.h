@@ -176,8 +176,6 @@ namespace signorini
     setup_system();
     void
     setup_contact_nodes();
-    void
-    setup_rigid_body_modes();
 
     // assembly.cc
     void
@@ -306,8 +304,6 @@ namespace signorini
     /** Dofs on a Dirichlet boundary in a fixed component: where the
      * support reactions act. */
     dealii::IndexSet support_dofs;
-    /** The translations, the AMG's near-null space (when it is used). */
-    std::vector<dealii::TrilinosWrappers::MPI::Vector> rigid_body_modes;
 
     /** Hanging nodes and Dirichlet data; fixed within a cycle. */
     dealii::AffineConstraints<double> fixed_constraints;

@@ -59,18 +59,19 @@ namespace signorini
     /**
      * Solves @p matrix x = @p rhs; @p solution is the initial guess of CG,
      * which stops at a residual of @p relative_tolerance times the norm of
-     * @p rhs (the direct solver ignores it). @p modes are the
-     * translations (one vector per direction), the near-null space of the
-     * AMG. Returns the iterations (1 for
+     * @p rhs (the direct solver ignores it). @p components is the number
+     * of displacement components, which the dofs of each vertex hold in
+     * consecutive order: the AMG aggregates vertices whole and takes the
+     * translations as its near-null space. Returns the iterations (1 for
      * the direct solver); throws SolverFailure if even the direct solver
      * fails.
      */
     unsigned int
-    solve(const dealii::TrilinosWrappers::SparseMatrix             &matrix,
-          dealii::TrilinosWrappers::MPI::Vector                    &solution,
-          const dealii::TrilinosWrappers::MPI::Vector              &rhs,
-          const std::vector<dealii::TrilinosWrappers::MPI::Vector> &modes,
-          const double relative_tolerance);
+    solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+          dealii::TrilinosWrappers::MPI::Vector        &solution,
+          const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+          const unsigned int                            components,
+          const double                                  relative_tolerance);
 
   private:
     void
@@ -80,8 +81,8 @@ namespace signorini
                  dealii::TrilinosWrappers::MPI::Vector        &solution,
                  const dealii::TrilinosWrappers::MPI::Vector  &rhs);
     void
-    build_amg(const dealii::TrilinosWrappers::SparseMatrix             &matrix,
-              const std::vector<dealii::TrilinosWrappers::MPI::Vector> &modes);
+    build_amg(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+              const unsigned int                            components);
     /** CG iterations; throws SolverFailure if it does not converge. */
     unsigned int
     solve_cg(const dealii::TrilinosWrappers::SparseMatrix &matrix,

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <signorini/contact_problem.h>
+#include <signorini/memory.h>
 
 #include <chrono>
 
@@ -64,17 +65,18 @@ namespace signorini
         const double solve_start = now();
         solve_contact_problem(cycle);
         timings.contact_solve = now() - solve_start;
-        estimate_error();
         // The matrix and its factorisation or AMG are rebuilt on the next
-        // mesh: free them before the output's patches are built, which is
-        // when a large cycle's memory peaked. (The timing table solves
-        // once more on this mesh.)
+        // mesh: free them before the error estimate and the output's
+        // patches take their memory. (The timing table solves once more on
+        // this mesh.)
         if (!parameters.output.timing_table)
           {
             linear_system_solver.reset();
             system_matrix.clear();
             matrix_assembled = false;
+            release_free_memory();
           }
+        estimate_error();
         run_time += now() - start;
         timings.run_time = run_time;
         record_statistics(cycle);
@@ -86,6 +88,7 @@ namespace signorini
           }
         save_checkpoint(cycle, run_time);
         background_writer.launch();
+        release_free_memory();
       }
     {
       TimerOutput::Scope t(timer, "Output");

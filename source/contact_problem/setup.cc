@@ -9,6 +9,7 @@
 
 #include <signorini/contact_problem.h>
 #include <signorini/input_error.h>
+#include <signorini/memory.h>
 #include <signorini/mesh_adaptation.h>
 
 #include <algorithm>
@@ -152,11 +153,14 @@ namespace signorini
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
     sparsity.compress();
+    // The pattern's construction left much of the heap free.
+    release_free_memory();
     // The solver's factorisation refers to the old matrix: drop it first.
     linear_system_solver.reset();
     system_matrix.reinit(sparsity);
     cell_stiffness.clear();
     matrix_assembled = false;
+    sparsity.clear();
 
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     base_rhs.reinit(locally_owned_dofs, mpi_communicator);
@@ -178,36 +182,7 @@ namespace signorini
         parameters.material.young_modulus /
         GridTools::minimal_cell_diameter(*triangulation);
 
-    if (parameters.linear_solver.type == LinearSolver::Type::amg_cg)
-      setup_rigid_body_modes();
     setup_contact_nodes();
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::setup_rigid_body_modes()
-  {
-    // Translations along each axis: with the vertices aggregated whole, the
-    // near-null space ML needs (see LinearSystemSolver). Q1 and P1 have all
-    // their dofs at vertices.
-    const unsigned int n_modes = dim;
-    rigid_body_modes.assign(n_modes,
-                            TrilinosWrappers::MPI::Vector(locally_owned_dofs,
-                                                          mpi_communicator));
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const auto i = cell->vertex_dof_index(v, d);
-                if (!locally_owned_dofs.is_element(i))
-                  continue;
-                rigid_body_modes[d](i) = 1.;
-              }
-          }
-    for (auto &mode : rigid_body_modes)
-      mode.compress(VectorOperation::insert);
   }
 
   template <int dim>
@@ -302,10 +277,6 @@ namespace signorini
   ContactProblem<2>::setup_system();
   template void
   ContactProblem<3>::setup_system();
-  template void
-  ContactProblem<2>::setup_rigid_body_modes();
-  template void
-  ContactProblem<3>::setup_rigid_body_modes();
   template void
   ContactProblem<2>::setup_contact_nodes();
   template void

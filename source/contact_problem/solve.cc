@@ -23,7 +23,7 @@ namespace signorini
         linear_system_solver.solve(system_matrix,
                                    distributed,
                                    system_rhs,
-                                   rigid_body_modes,
+                                   fe->n_components(),
                                    final_step ? linear.tolerance :
                                                 linear.newton_tolerance);
       }
