@@ -57,19 +57,45 @@ namespace signorini
   }
 
   template <int dim>
+  typename CellStiffness<dim>::Shape
+  CellStiffness<dim>::shape_of(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    double                                               &scale)
+  {
+    const Point<dim> origin = cell->vertex(0);
+    scale                   = cell->vertex(1).distance(origin);
+    Shape shape;
+    shape.fill(0.);
+    for (unsigned int v = 1; v < cell->n_vertices(); ++v)
+      for (unsigned int d = 0; d < dim; ++d)
+        shape[(v - 1) * dim + d] = (cell->vertex(v)[d] - origin[d]) / scale;
+    return shape;
+  }
+
+  template <int dim>
+  const FullMatrix<double> *
+  CellStiffness<dim>::cached(
+    const typename DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    double     scale;
+    const auto found = cache.find(shape_of(cell, scale));
+    if (found == cache.end())
+      return nullptr;
+    if (dim == 2)
+      return &found->second;
+    scaled = found->second;
+    scaled *= std::pow(scale, dim - 2.);
+    return &scaled;
+  }
+
+  template <int dim>
   const FullMatrix<double> &
   CellStiffness<dim>::matrix(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     FEValues<dim>                                        &fe_values)
   {
-    const unsigned int n_vertices = cell->n_vertices();
-    const Point<dim>   origin     = cell->vertex(0);
-    const double       scale      = cell->vertex(1).distance(origin);
-    Shape              shape;
-    shape.fill(0.);
-    for (unsigned int v = 1; v < n_vertices; ++v)
-      for (unsigned int d = 0; d < dim; ++d)
-        shape[(v - 1) * dim + d] = (cell->vertex(v)[d] - origin[d]) / scale;
+    double      scale;
+    const Shape shape = shape_of(cell, scale);
 
     // Keep storing while the cache is small or repetitions are common.
     ++lookups;

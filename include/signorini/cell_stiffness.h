@@ -39,6 +39,12 @@ namespace signorini
     matrix(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
            dealii::FEValues<dim> &fe_values);
 
+    /** The stiffness matrix of @p cell if its shape is cached, else null
+     * (the caller may then need less than the whole matrix). Valid until
+     * the next call. */
+    const dealii::FullMatrix<double> *
+    cached(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
+
     /** The matrix of the cell @p fe_values was reinit'ed on, computed. */
     void
     compute(const dealii::FEValues<dim> &fe_values,
@@ -47,6 +53,12 @@ namespace signorini
   private:
     static constexpr unsigned int max_vertices = 1U << dim;
     using Shape = std::array<double, dim *(max_vertices - 1)>;
+
+    /** The vertex offsets of @p cell divided by its first edge's length,
+     * @p scale. */
+    static Shape
+    shape_of(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+             double &scale);
 
     const Material                             &material;
     std::map<Shape, dealii::FullMatrix<double>> cache;

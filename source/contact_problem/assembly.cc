@@ -243,10 +243,19 @@ namespace signorini
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          // The internal force K_cell u_cell.
-          cell->get_dof_values(solution, cell_solution);
-          cell_stiffness.matrix(cell, fe_values)
-            .vmult(cell_residual, cell_solution);
+          // The internal force K_cell u_cell; from the stresses where the
+          // cell's matrix is not cached (curved meshes), which costs an
+          // eighth of computing the matrix in 3D.
+          if (const auto *matrix = cell_stiffness.cached(cell))
+            {
+              cell->get_dof_values(solution, cell_solution);
+              matrix->vmult(cell_residual, cell_solution);
+            }
+          else
+            {
+              fe_values.reinit(cell);
+              assemble_cell_internal_force(fe_values, cell_residual);
+            }
           cell->get_dof_indices(dof_indices);
           fixed_constraints.distribute_local_to_global(cell_residual,
                                                        dof_indices,
