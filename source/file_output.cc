@@ -97,21 +97,24 @@ namespace signorini
             failed = true;
             return;
           }
+        // Compressed into a buffer of the largest size a block can take,
+        // then copied: a block keeps only the memory it needs.
+        std::vector<unsigned char> buffer(deflateBound(&stream, block_size));
         for (std::size_t i = next++; i < blocks.size(); i = next++)
           {
             CompressedArray  &array = arrays[blocks[i].first];
             const std::size_t start = blocks[i].second * block_size;
             const std::size_t size = std::min(block_size, array.size - start);
-            auto             &block = array.blocks[blocks[i].second];
-            block.resize(deflateBound(&stream, size));
             deflateReset(&stream);
             stream.next_in = const_cast<unsigned char *>(array.data + start);
             stream.avail_in  = size;
-            stream.next_out  = block.data();
-            stream.avail_out = block.size();
+            stream.next_out  = buffer.data();
+            stream.avail_out = buffer.size();
             if (deflate(&stream, Z_FINISH) != Z_STREAM_END)
               failed = true;
-            block.resize(stream.total_out);
+            array.blocks[blocks[i].second].assign(buffer.data(),
+                                                  buffer.data() +
+                                                    stream.total_out);
           }
         deflateEnd(&stream);
       };
