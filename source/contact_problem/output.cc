@@ -272,13 +272,20 @@ namespace signorini
       std::vector<double>    entries(dofs.n_elements());
       const Epetra_BlockMap &map    = vector.trilinos_partitioner();
       const double          *values = vector.trilinos_vector()[0];
+      std::size_t            found  = 0;
       for (int k = 0; k < map.NumMyElements(); ++k)
         {
           const auto i =
             dofs.index_within_set(TrilinosWrappers::global_index(map, k));
           if (i != numbers::invalid_dof_index)
-            entries[i] = values[k];
+            {
+              entries[i] = values[k];
+              ++found;
+            }
         }
+      AssertThrow(found == entries.size(),
+                  ExcMessage("A vector written to the solution file lacks "
+                             "locally relevant entries."));
       return entries;
     }
 
