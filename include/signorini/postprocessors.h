@@ -1,7 +1,8 @@
 #ifndef signorini_postprocessors_h
 #define signorini_postprocessors_h
 
-#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <signorini/material.h>
 #include <signorini/obstacle.h>
@@ -11,62 +12,42 @@
 
 namespace signorini
 {
-  /** Stress fields from the displacement: `von_mises` and the components
-   * `stress_xx`, `stress_yy`, `stress_zz`, `stress_xy`[, `stress_xz`,
-   * `stress_yz`] [MPa]. In 2D, stress_zz is the out-of-plane stress (zero in
-   * plane stress). */
+  /**
+   * The scalar fields of a solution file that follow from the displacement at
+   * a point: `von_mises` and the components `stress_xx`, `stress_yy`,
+   * `stress_zz`, `stress_xy`[, `stress_xz`, `stress_yz`] [MPa], then `gap`
+   * [mm], the vertical distance of the deformed point above the obstacle,
+   * y + u_y - psi(x) (z + u_z - psi(x, y) in 3D), negative inside it. In 2D,
+   * stress_zz is the out-of-plane stress (zero in plane stress).
+   *
+   * One call evaluates all of them from the displacement and its gradient,
+   * which the output computes once per point for every field.
+   */
   template <int dim>
-  class StressPostprocessor : public dealii::DataPostprocessor<dim>
+  class DisplacementFields
   {
   public:
-    explicit StressPostprocessor(const Material &material);
+    /** The number of fields. */
+    static constexpr unsigned int n_fields = (dim == 2 ? 5 : 7) + 1;
 
+    DisplacementFields(const Material &material, const Obstacle<dim> &obstacle);
+
+    /** The names of the fields, in the order evaluate() fills them. */
+    static std::vector<std::string>
+    names();
+
+    /** Fills @p fields (n_fields values) at the point @p point, where the
+     * displacement is @p displacement with the gradient @p gradient (row i:
+     * the gradient of u_i). */
     void
-    evaluate_vector_field(
-      const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
-      std::vector<dealii::Vector<double>> &computed_quantities) const override;
-
-    std::vector<std::string>
-    get_names() const override;
-
-    dealii::UpdateFlags
-    get_needed_update_flags() const override;
+    evaluate(const dealii::Point<dim>     &point,
+             const dealii::Tensor<1, dim> &displacement,
+             const dealii::Tensor<2, dim> &gradient,
+             double                       *fields) const;
 
   private:
-    const Material &material;
-  };
-
-  /** `gap` [mm]: the vertical distance of the deformed point above the
-   * obstacle, y + u_y - psi(x) (z + u_z - psi(x, y) in 3D); negative inside
-   * it. */
-  template <int dim>
-  class GapPostprocessor : public dealii::DataPostprocessorScalar<dim>
-  {
-  public:
-    explicit GapPostprocessor(const Obstacle<dim> &obstacle);
-
-    void
-    evaluate_vector_field(
-      const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
-      std::vector<dealii::Vector<double>> &computed_quantities) const override;
-
-  private:
+    const Material      &material;
     const Obstacle<dim> &obstacle;
-  };
-
-  /** A scalar named @p name: the vertical component of a nodal vector that
-   * holds a contact quantity (pressure, active-set indicator) in the vertical
-   * displacement slots. */
-  template <int dim>
-  class VerticalComponent : public dealii::DataPostprocessorScalar<dim>
-  {
-  public:
-    explicit VerticalComponent(const std::string &name);
-
-    void
-    evaluate_vector_field(
-      const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
-      std::vector<dealii::Vector<double>> &computed_quantities) const override;
   };
 } // namespace signorini
 
