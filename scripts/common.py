@@ -57,6 +57,14 @@ def run(work, name, base, settings, check=True, processes=0):
     output.update(settings.get("Output", {}))
     output["Directory"] = folder
     settings["Output"] = output
+    # A scene that includes another (a variant), or names a mesh file,
+    # finds it beside the file given to the program: link the scene's
+    # folder's files there.
+    scenes = os.path.dirname(os.path.join(ROOT, base))
+    for entry in os.listdir(scenes):
+        link = os.path.join(work, entry)
+        if not os.path.lexists(link):
+            os.symlink(os.path.join(scenes, entry), link)
     lines = ["include " + os.path.join(ROOT, base)]
     for section, entries in settings.items():
         lines.append("subsection " + section)
