@@ -2,11 +2,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <signorini/contact_problem.h>
-#include <signorini/failures.h>
-#include <signorini/include_check.h>
-#include <signorini/input_error.h>
-#include <signorini/parameters.h>
+#include <signorini/base/failures.h>
+#include <signorini/input/include_check.h>
+#include <signorini/input/input_error.h>
+#include <signorini/input/parameters.h>
+#include <signorini/problem/contact_problem.h>
 #include <signorini/program.h>
 
 #include <exception>

@@ -3,7 +3,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
-#include <signorini/gmsh_mesher.h>
+#include <signorini/discretisation/gmsh_mesher.h>
 #include <signorini/mesh_adaptation/gmsh_remeshing.h>
 #include <signorini/mesh_adaptation/size_field.h>
 #include <signorini/mesh_adaptation/vertex_transfer.h>

@@ -1,0 +1,51 @@
+#ifndef signorini_elasticity_boundary_conditions_h
+#define signorini_elasticity_boundary_conditions_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/fe/component_mask.h>
+
+#include <memory>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * Loads and supports: subsection `Boundary conditions`.
+   *
+   * - `Dirichlet = 0: xy; 1: y` fixes the listed displacement components on
+   *   each boundary id (`all` for every component) to `Prescribed
+   *   displacement`.
+   * - `Traction` acts on the boundary ids in `Traction boundary ids`; or,
+   *   with `Traction resultant`, a uniform traction whose resultant is that
+   *   force on every mesh, however faceted its curved boundaries.
+   * - `Body force` acts in the whole body.
+   *
+   * Functions are muparser expressions of x, y[, z], one per component
+   * separated by ';', or one expression for all components.
+   */
+  template <int dim>
+  struct BoundaryConditions
+  {
+    std::vector<std::pair<dealii::types::boundary_id, dealii::ComponentMask>>
+                                                 dirichlet;
+    std::unique_ptr<dealii::FunctionParser<dim>> prescribed_displacement;
+    std::set<dealii::types::boundary_id>         traction_ids;
+    std::unique_ptr<dealii::FunctionParser<dim>> traction;
+    /** The force [N] the uniform traction adds up to, if given. */
+    std::optional<dealii::Tensor<1, dim>>        traction_resultant;
+    std::unique_ptr<dealii::FunctionParser<dim>> body_force;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,70 @@
+#ifndef signorini_elasticity_cell_stiffness_h
+#define signorini_elasticity_cell_stiffness_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <signorini/elasticity/material.h>
+
+#include <array>
+#include <map>
+
+namespace signorini
+{
+  /**
+   * The stiffness matrix of a cell, the integral of eps(phi_i) : sigma(phi_j)
+   * [N/mm], computed once per cell shape. Cells whose vertices are a
+   * translated and scaled copy of another cell's (all cells of a refined box,
+   * most of an adaptive mesh of straight-sided cells) share one matrix, up to
+   * the factor s^(dim-2) for the scale s: with linear mappings the geometry
+   * is the vertices. The shape is compared exactly (vertex offsets divided
+   * by the first edge's length), so a cached matrix is the computed one to
+   * round-off. Cells of curved meshes rarely repeat: after a number of
+   * shapes without repetition the cache stops storing new ones.
+   */
+  template <int dim>
+  class CellStiffness
+  {
+  public:
+    CellStiffness(const Material &material);
+
+    /** Forgets the cached matrices (call when the mesh changes). */
+    void
+    clear();
+
+    /** The stiffness matrix of @p cell; @p fe_values is reinit'ed on it only
+     * when the matrix has to be computed. */
+    const dealii::FullMatrix<double> &
+    matrix(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+           dealii::FEValues<dim> &fe_values);
+
+    /** The stiffness matrix of @p cell if its shape is cached, else null
+     * (the caller may then need less than the whole matrix). Valid until
+     * the next call. */
+    const dealii::FullMatrix<double> *
+    cached(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
+
+    /** The matrix of the cell @p fe_values was reinit'ed on, computed. */
+    void
+    compute(const dealii::FEValues<dim> &fe_values,
+            dealii::FullMatrix<double>  &cell_matrix) const;
+
+  private:
+    static constexpr unsigned int max_vertices = 1U << dim;
+    using Shape = std::array<double, dim *(max_vertices - 1)>;
+
+    /** The vertex offsets of @p cell divided by its first edge's length,
+     * @p scale. */
+    static Shape
+    shape_of(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+             double &scale);
+
+    const Material                             &material;
+    std::map<Shape, dealii::FullMatrix<double>> cache;
+    unsigned int                                lookups = 0;
+    dealii::FullMatrix<double>                  scaled;
+  };
+} // namespace signorini
+
+#endif

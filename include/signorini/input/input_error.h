@@ -1,0 +1,77 @@
+#ifndef signorini_input_input_error_h
+#define signorini_input_input_error_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * A problem with the user's input: the entry it concerns (as
+   * "Subsection/Entry") or the place in a file ("FILE:LINE"), and what is
+   * wrong. The program reports it as one line and exits with status 1.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    /** An error in the value of @p entry of the parameter file. */
+    InputError(const std::string &entry, const std::string &message);
+
+    /** An error at @p location, e.g. "FILE:LINE", of no particular entry. */
+    static InputError
+    at(const std::string &location, const std::string &message);
+
+    /** The entry the error concerns, empty if none. */
+    std::string entry;
+    /** Where the error is, empty for the parameter file as a whole. */
+    std::string location;
+  };
+
+  /** The additional information of a deal.II exception as one line. */
+  std::string
+  one_line(const dealii::ExceptionBase &error);
+
+  /** Parsers for the list formats used in parameter files. Each throws an
+   * InputError that names @p entry. */
+  namespace parse
+  {
+    /** "x0, x1[, x2]" with exactly @p dim coordinates. */
+    template <int dim>
+    dealii::Point<dim>
+    point(const std::string &text, const std::string &entry);
+
+    /** A ';'-separated list of points, e.g. "10, 0; 5, 1". Empty text gives an
+     * empty list. */
+    template <int dim>
+    std::vector<dealii::Point<dim>>
+    point_list(const std::string &text, const std::string &entry);
+
+    /** A ','-separated list of boundary ids, e.g. "0, 2". */
+    std::set<dealii::types::boundary_id>
+    boundary_ids(const std::string &text, const std::string &entry);
+
+    /** A ','-separated list of @p n unsigned integers ("20, 2"). */
+    std::vector<unsigned int>
+    unsigned_list(const std::string &text,
+                  const unsigned int n,
+                  const std::string &entry);
+
+    /** Displacement components as letters ("x", "xy", "y z") or "all". */
+    std::vector<bool>
+    components(const std::string &text,
+               const unsigned int dim,
+               const std::string &entry);
+
+    /** Split at @p separator and trim white space; empty items are dropped. */
+    std::vector<std::string>
+    split(const std::string &text, const char separator);
+  } // namespace parse
+} // namespace signorini
+
+#endif

@@ -1,0 +1,30 @@
+#ifndef signorini_mesh_adaptation_refinement_parameters_h
+#define signorini_mesh_adaptation_refinement_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace signorini
+{
+  /** Adaptive cycles: subsection `Mesh refinement`. */
+  struct Refinement
+  {
+    enum class Strategy
+    {
+      global,
+      kelly
+    };
+
+    unsigned int n_cycles         = 1;
+    Strategy     strategy         = Strategy::kelly;
+    double       refine_fraction  = 0.3;
+    double       coarsen_fraction = 0.03;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,54 @@
+#ifndef signorini_output_output_series_h
+#define signorini_output_output_series_h
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * The files a run owns in its output directory: the series
+   * solution-CC.vtu, solution-CC.pvtu and their pieces solution-CC.RRRR.vtu,
+   * contact_pressure-CC.csv and checkpoint-CC.* for cycles CC, and
+   * solution.pvd, statistics.csv and timings.csv; each also as the
+   * temporary NAME.part of an interrupted write. (obstacle.vtu and
+   * parameters.prm are rewritten at the start of every run.) Nothing else in
+   * the directory is the run's.
+   */
+  namespace output_series
+  {
+    /** What a file name means to the series. */
+    struct Member
+    {
+      /** The file belongs to the series. */
+      bool owned = false;
+      /** Its cycle, for the files of one cycle. */
+      std::optional<unsigned int> cycle;
+      /** A checkpoint file. */
+      bool checkpoint = false;
+      /** A temporary file of an interrupted write. */
+      bool partial = false;
+    };
+
+    /** Classifies @p name, a file name without its folder. */
+    Member
+    classify(const std::string &name);
+
+    /**
+     * Removes from @p directory the series files that a previous run left
+     * and that this run does not continue from. A fresh run (@p resumed_cycle
+     * empty) removes every series file, so that a run that stops early leaves
+     * no cycles of an earlier one. A run resumed after cycle k keeps the files
+     * of cycles 0..k and the checkpoint of cycle k, and removes those of
+     * later cycles, other checkpoints and temporaries. Files outside the
+     * series are never touched; a missing directory is fine. Returns the
+     * names removed; throws std::runtime_error if one cannot be removed.
+     */
+    std::vector<std::string>
+    remove_stale_files(const std::string                 &directory,
+                       const std::optional<unsigned int> &resumed_cycle);
+  } // namespace output_series
+} // namespace signorini
+
+#endif

@@ -1,0 +1,54 @@
+#ifndef signorini_output_postprocessors_h
+#define signorini_output_postprocessors_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <signorini/contact/obstacle.h>
+#include <signorini/elasticity/material.h>
+
+#include <string>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * The scalar fields of a solution file that follow from the displacement at
+   * a point: `von_mises` and the components `stress_xx`, `stress_yy`,
+   * `stress_zz`, `stress_xy`[, `stress_xz`, `stress_yz`] [MPa], then `gap`
+   * [mm], the vertical distance of the deformed point above the obstacle,
+   * y + u_y - psi(x) (z + u_z - psi(x, y) in 3D), negative inside it. In 2D,
+   * stress_zz is the out-of-plane stress (zero in plane stress).
+   *
+   * One call evaluates all of them from the displacement and its gradient,
+   * which the output computes once per point for every field.
+   */
+  template <int dim>
+  class DisplacementFields
+  {
+  public:
+    /** The number of fields. */
+    static constexpr unsigned int n_fields = (dim == 2 ? 5 : 7) + 1;
+
+    DisplacementFields(const Material &material, const Obstacle<dim> &obstacle);
+
+    /** The names of the fields, in the order evaluate() fills them. */
+    static std::vector<std::string>
+    names();
+
+    /** Fills @p fields (n_fields values) at the point @p point, where the
+     * displacement is @p displacement with the gradient @p gradient (row i:
+     * the gradient of u_i). */
+    void
+    evaluate(const dealii::Point<dim>     &point,
+             const dealii::Tensor<1, dim> &displacement,
+             const dealii::Tensor<2, dim> &gradient,
+             double                       *fields) const;
+
+  private:
+    const Material      &material;
+    const Obstacle<dim> &obstacle;
+  };
+} // namespace signorini
+
+#endif

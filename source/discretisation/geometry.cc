@@ -1,0 +1,296 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <signorini/discretisation/geometry.h>
+#include <signorini/input/input_error.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  Geometry<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Type",
+                      "rectangle",
+                      Patterns::Selection(
+                        "rectangle|half ball|quarter disk|quarter ball|gmsh"),
+                      "Shape of the body: a rectangle (box in 3D); a half ball "
+                      "(half-disk in 2D) with its curved face down (boundary "
+                      "id 0) and its flat face up (id 1); a quarter disk (2D "
+                      "only), the half of a half-disk at x >= Center x, with "
+                      "the curved face down (id 0), the flat face up (id 1) "
+                      "and the symmetry line x = Center x (id 2); a quarter "
+                      "ball (3D only), the quarter x >= Center x, y >= "
+                      "Center y of a half ball: curved face down (id 0), "
+                      "flat face up (id 1), symmetry planes x = Center x "
+                      "(id 2) and y = Center y (id 3); or a Gmsh mesh file.");
+    prm.declare_entry("Lower left corner",
+                      "0, 0",
+                      Patterns::Anything(),
+                      "rectangle: corner with the smallest coordinates [mm], "
+                      "e.g. '0, 0' (2D) or '0, 0, 0' (3D).");
+    prm.declare_entry("Upper right corner",
+                      "1, 1",
+                      Patterns::Anything(),
+                      "rectangle: corner with the largest coordinates [mm].");
+    prm.declare_entry("Subdivisions",
+                      "1, 1",
+                      Patterns::Anything(),
+                      "rectangle: number of cells in x, y[, z] on the coarse "
+                      "mesh.");
+    prm.declare_entry("Cell type",
+                      "automatic",
+                      Patterns::Selection("automatic|quadrilateral|simplex"),
+                      "quadrilateral: quadrilateral/hexahedral cells with Q1 "
+                      "elements; simplex: triangles/tetrahedra with P1 "
+                      "elements. rectangle: simplex splits each "
+                      "quadrilateral into 8 triangles (hexahedron into 24 "
+                      "tetrahedra); automatic is quadrilateral. gmsh with a "
+                      ".geo: Gmsh makes triangles/tetrahedra, or recombined "
+                      "quadrilaterals (hexahedra: tetrahedra split into "
+                      "four); automatic is what the .geo says (Gmsh's "
+                      "default: simplices).");
+    prm.declare_entry("Mesh size",
+                      "0",
+                      Patterns::Double(0.),
+                      "gmsh with a .geo: target cell size [mm] everywhere; 0 "
+                      "keeps the sizes the .geo gives.");
+    prm.declare_entry("Center",
+                      "0, 1",
+                      Patterns::Anything(),
+                      "half ball, quarter disk, quarter ball: center of the "
+                      "flat face [mm].");
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(0.),
+                      "half ball, quarter disk, quarter ball: radius [mm].");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "gmsh: a .msh mesh, or a .geo geometry that Gmsh "
+                      "meshes when the run starts (and remeshes for kelly "
+                      "cycles on simplices), relative to the folder of the "
+                      "parameter file. Physical groups of boundary lines "
+                      "(faces in 3D) give the boundary ids.");
+    prm.declare_entry("Initial refinement",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Global refinements of the coarse mesh before cycle 0 "
+                      "(a .geo: Gmsh's sizes divided by 2^k).");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Geometry<dim>::parse_parameters(ParameterHandler               &prm,
+                                  const std::vector<std::string> &folders)
+  {
+    prm.enter_subsection("Geometry");
+    const std::string name = prm.get("Type");
+    type                   = name == "rectangle"    ? Type::rectangle :
+                             name == "gmsh"         ? Type::gmsh :
+                             name == "quarter disk" ? Type::quarter_disk :
+                             name == "quarter ball" ? Type::quarter_ball :
+                                                      Type::half_ball;
+    if (type == Type::quarter_disk && dim != 2)
+      throw InputError("Geometry/Type",
+                       "quarter disk is a two-dimensional shape; use half "
+                       "ball in 3D");
+    if (type == Type::quarter_ball && dim != 3)
+      throw InputError("Geometry/Type",
+                       "quarter ball is a three-dimensional shape; use "
+                       "quarter disk in 2D");
+    if (type == Type::rectangle)
+      {
+        lower_left   = parse::point<dim>(prm.get("Lower left corner"),
+                                       "Geometry/Lower left corner");
+        upper_right  = parse::point<dim>(prm.get("Upper right corner"),
+                                        "Geometry/Upper right corner");
+        subdivisions = parse::unsigned_list(prm.get("Subdivisions"),
+                                            dim,
+                                            "Geometry/Subdivisions");
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(lower_left[d] < upper_right[d]))
+            throw InputError("Geometry/Upper right corner",
+                             "must exceed the lower left corner in every "
+                             "coordinate");
+      }
+    const std::string cells = prm.get("Cell type");
+    cell_type = cells == "simplex" ? GmshOptions::CellType::simplex :
+                cells == "quadrilateral" ?
+                                     GmshOptions::CellType::quadrilateral :
+                                     GmshOptions::CellType::automatic;
+    mesh_size = prm.get_double("Mesh size");
+    if (type == Type::half_ball || type == Type::quarter_disk ||
+        type == Type::quarter_ball)
+      {
+        center = parse::point<dim>(prm.get("Center"), "Geometry/Center");
+        radius = prm.get_double("Radius");
+        if (!(radius > 0))
+          throw InputError("Geometry/Radius", "must be positive");
+      }
+    if (type == Type::gmsh)
+      {
+        mesh_file = prm.get("Mesh file");
+        if (mesh_file.empty())
+          throw InputError("Geometry/Mesh file", "is required for Type = gmsh");
+        if (mesh_file[0] != '/')
+          {
+            // The first folder that holds it (else the first, for the
+            // error below).
+            const std::string name = mesh_file;
+            mesh_file              = folders.front() + "/" + name;
+            for (const auto &folder : folders)
+              if (std::ifstream(folder + "/" + name))
+                {
+                  mesh_file = folder + "/" + name;
+                  break;
+                }
+          }
+        if (!std::ifstream(mesh_file))
+          throw InputError("Geometry/Mesh file",
+                           "cannot open '" + mesh_file + "'");
+      }
+    initial_refinement = prm.get_integer("Initial refinement");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  bool
+  Geometry<dim>::from_geometry_file() const
+  {
+    return type == Type::gmsh && mesh_file.size() > 4 &&
+           mesh_file.substr(mesh_file.size() - 4) == ".geo";
+  }
+
+  template <int dim>
+  GmshOptions
+  Geometry<dim>::gmsh_options() const
+  {
+    GmshOptions options;
+    options.cell_type   = cell_type;
+    options.size        = mesh_size;
+    options.size_factor = std::pow(0.5, initial_refinement);
+    return options;
+  }
+
+  template <int dim>
+  void
+  Geometry<dim>::create_coarse_mesh(Triangulation<dim> &coarse_mesh,
+                                    const MPI_Comm      comm) const
+  {
+    const bool simplex = cell_type == GmshOptions::CellType::simplex;
+    switch (type)
+      {
+        case Type::rectangle:
+          {
+            Triangulation<dim> quads;
+            GridGenerator::subdivided_hyper_rectangle(simplex ? quads :
+                                                                coarse_mesh,
+                                                      subdivisions,
+                                                      lower_left,
+                                                      upper_right,
+                                                      /*colorize=*/true);
+            if (simplex)
+              GridGenerator::convert_hypercube_to_simplex_mesh(quads,
+                                                               coarse_mesh);
+            break;
+          }
+        case Type::half_ball:
+          {
+            // deal.II's half ball lies at x >= 0; turn it so that the curved
+            // face points down (-y in 2D, -z in 3D), then move it to Center.
+            GridGenerator::half_hyper_ball(coarse_mesh, Point<dim>(), radius);
+            const Point<dim> c = center;
+            GridTools::transform(
+              [c](const Point<dim> &p) {
+                Point<dim> q = c;
+                q[0] += p[dim - 1];
+                if (dim == 3)
+                  q[1] += p[1];
+                q[dim - 1] -= p[0];
+                return q;
+              },
+              coarse_mesh);
+            coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
+            break;
+          }
+        case Type::quarter_disk:
+          {
+            // deal.II's quarter disk lies at x, y >= 0; turn it by -90
+            // degrees so that the curved face points down, move it to
+            // Center, and give the symmetry line x = Center x its own id.
+            GridGenerator::quarter_hyper_ball(coarse_mesh,
+                                              Point<dim>(),
+                                              radius);
+            const Point<dim> c = center;
+            GridTools::transform(
+              [c](const Point<dim> &p) {
+                Point<dim> q = c;
+                q[0] += p[1];
+                q[1] -= p[0];
+                return q;
+              },
+              coarse_mesh);
+            for (const auto &face : coarse_mesh.active_face_iterators())
+              if (face->at_boundary() && face->boundary_id() == 1 &&
+                  std::abs(face->center()[0] - c[0]) < 1e-10 * radius)
+                face->set_boundary_id(2);
+            coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
+            break;
+          }
+        case Type::quarter_ball:
+          {
+            // deal.II's eighth of a ball lies at x, y, z >= 0; turn it about
+            // y so that the curved face points down, move it to Center, and
+            // give the symmetry planes x = Center x and y = Center y their
+            // own ids (the third cut face is the flat top, id 1).
+            GridGenerator::quarter_hyper_ball(coarse_mesh,
+                                              Point<dim>(),
+                                              radius);
+            const Point<dim> c = center;
+            GridTools::transform(
+              [c](const Point<dim> &p) {
+                Point<dim> q = c;
+                q[0] += p[dim - 1];
+                q[1] += p[1];
+                q[dim - 1] -= p[0];
+                return q;
+              },
+              coarse_mesh);
+            for (const auto &face : coarse_mesh.active_face_iterators())
+              if (face->at_boundary() && face->boundary_id() == 1)
+                {
+                  if (std::abs(face->center()[0] - c[0]) < 1e-10 * radius)
+                    face->set_boundary_id(2);
+                  else if (std::abs(face->center()[1] - c[1]) < 1e-10 * radius)
+                    face->set_boundary_id(3);
+                }
+            coarse_mesh.set_manifold(0, SphericalManifold<dim>(center));
+            break;
+          }
+        case Type::gmsh:
+          {
+            if (from_geometry_file())
+              mesh_geometry_file(mesh_file, gmsh_options(), coarse_mesh, comm);
+            else
+              {
+                std::ifstream input(mesh_file);
+                read_msh(input, mesh_file, coarse_mesh);
+              }
+            break;
+          }
+      }
+  }
+
+  template struct Geometry<2>;
+  template struct Geometry<3>;
+} // namespace signorini

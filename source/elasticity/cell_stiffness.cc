@@ -1,0 +1,127 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <signorini/elasticity/cell_stiffness.h>
+
+#include <cmath>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** Shapes stored at most, and how many look-ups must have found a
+     * repetition for the cache to go on storing. */
+    constexpr unsigned int max_shapes = 4096;
+  } // namespace
+
+  template <int dim>
+  CellStiffness<dim>::CellStiffness(const Material &material)
+    : material(material)
+  {
+  }
+
+  template <int dim>
+  void
+  CellStiffness<dim>::clear()
+  {
+    cache.clear();
+    lookups = 0;
+  }
+
+  template <int dim>
+  void
+  CellStiffness<dim>::compute(const FEValues<dim> &fe_values,
+                              FullMatrix<double>  &cell_matrix) const
+  {
+    const unsigned int               n = fe_values.get_fe().n_dofs_per_cell();
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(n), stress(n);
+    cell_matrix.reinit(n, n);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            strain[i] = fe_values[displacement].symmetric_gradient(i, q);
+            stress[i] = material.template stress<dim>(strain[i]) * JxW;
+          }
+        // The matrix is symmetric: the lower triangle, mirrored below.
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) += strain[i] * stress[j];
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        cell_matrix(j, i) = cell_matrix(i, j);
+  }
+
+  template <int dim>
+  typename CellStiffness<dim>::Shape
+  CellStiffness<dim>::shape_of(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    double                                               &scale)
+  {
+    const Point<dim> origin = cell->vertex(0);
+    scale                   = cell->vertex(1).distance(origin);
+    Shape shape;
+    shape.fill(0.);
+    for (unsigned int v = 1; v < cell->n_vertices(); ++v)
+      for (unsigned int d = 0; d < dim; ++d)
+        shape[(v - 1) * dim + d] = (cell->vertex(v)[d] - origin[d]) / scale;
+    return shape;
+  }
+
+  template <int dim>
+  const FullMatrix<double> *
+  CellStiffness<dim>::cached(
+    const typename DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    double     scale;
+    const auto found = cache.find(shape_of(cell, scale));
+    if (found == cache.end())
+      return nullptr;
+    if (dim == 2)
+      return &found->second;
+    scaled = found->second;
+    scaled *= std::pow(scale, dim - 2.);
+    return &scaled;
+  }
+
+  template <int dim>
+  const FullMatrix<double> &
+  CellStiffness<dim>::matrix(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    FEValues<dim>                                        &fe_values)
+  {
+    double      scale;
+    const Shape shape = shape_of(cell, scale);
+
+    // Keep storing while the cache is small or repetitions are common.
+    ++lookups;
+    const bool store =
+      cache.size() < max_shapes && cache.size() * 2 <= lookups + 64;
+    auto found = cache.find(shape);
+    if (found == cache.end())
+      {
+        fe_values.reinit(cell);
+        if (!store)
+          {
+            compute(fe_values, scaled);
+            return scaled;
+          }
+        // Stored for the unit scale: K(s x) = s^(dim-2) K(x).
+        found = cache.emplace(shape, FullMatrix<double>()).first;
+        compute(fe_values, found->second);
+        found->second *= std::pow(scale, 2. - dim);
+      }
+    if (dim == 2)
+      return found->second;
+    scaled = found->second;
+    scaled *= std::pow(scale, dim - 2.);
+    return scaled;
+  }
+
+  template class CellStiffness<2>;
+  template class CellStiffness<3>;
+} // namespace signorini

@@ -1,0 +1,49 @@
+#include <signorini/output/background_writer.h>
+
+#include <utility>
+
+namespace signorini
+{
+  BackgroundWriter::~BackgroundWriter()
+  {
+    try
+      {
+        wait();
+      }
+    catch (...)
+      {
+      }
+  }
+
+  void
+  BackgroundWriter::add(std::function<void()> write)
+  {
+    batch.push_back(std::move(write));
+  }
+
+  bool
+  BackgroundWriter::queued() const
+  {
+    return !batch.empty();
+  }
+
+  void
+  BackgroundWriter::launch()
+  {
+    wait();
+    if (batch.empty())
+      return;
+    running = std::async(std::launch::async, [writes = std::move(batch)]() {
+      for (const auto &write : writes)
+        write();
+    });
+    batch.clear();
+  }
+
+  void
+  BackgroundWriter::wait()
+  {
+    if (running.valid())
+      running.get();
+  }
+} // namespace signorini

@@ -1,0 +1,75 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <signorini/output/postprocessors.h>
+
+#include <cmath>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  DisplacementFields<dim>::DisplacementFields(const Material      &material,
+                                              const Obstacle<dim> &obstacle)
+    : material(material)
+    , obstacle(obstacle)
+  {
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  DisplacementFields<dim>::names()
+  {
+    if (dim == 2)
+      return {
+        "von_mises", "stress_xx", "stress_yy", "stress_zz", "stress_xy", "gap"};
+    return {"von_mises",
+            "stress_xx",
+            "stress_yy",
+            "stress_zz",
+            "stress_xy",
+            "stress_xz",
+            "stress_yz",
+            "gap"};
+  }
+
+  template <int dim>
+  void
+  DisplacementFields<dim>::evaluate(const Point<dim>     &point,
+                                    const Tensor<1, dim> &displacement,
+                                    const Tensor<2, dim> &gradient,
+                                    double               *fields) const
+  {
+    SymmetricTensor<2, dim> strain;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        strain[i][j] = 0.5 * (gradient[i][j] + gradient[j][i]);
+    const auto sigma = material.stress<dim>(strain);
+
+    // The full 3x3 stress, with the out-of-plane entry of a 2D state.
+    double s[3][3] = {};
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        s[i][j] = sigma[i][j];
+    if (dim == 2)
+      s[2][2] = material.out_of_plane_stress<dim>(strain);
+    fields[0] = std::sqrt(
+      0.5 * ((s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
+             (s[1][1] - s[2][2]) * (s[1][1] - s[2][2]) +
+             (s[2][2] - s[0][0]) * (s[2][2] - s[0][0])) +
+      3. * (s[0][1] * s[0][1] + s[0][2] * s[0][2] + s[1][2] * s[1][2]));
+    fields[1] = s[0][0];
+    fields[2] = s[1][1];
+    fields[3] = s[2][2];
+    fields[4] = s[0][1];
+    if (dim == 3)
+      {
+        fields[5] = s[0][2];
+        fields[6] = s[1][2];
+      }
+    fields[n_fields - 1] = obstacle.gap(point) + displacement[dim - 1];
+  }
+
+  template class DisplacementFields<2>;
+  template class DisplacementFields<3>;
+} // namespace signorini
