@@ -70,8 +70,14 @@ def run(work, name, base, settings, check=True, processes=0):
         lines.append("subsection " + section)
         lines += ["  set %s = %s" % item for item in entries.items()]
         lines.append("end")
-    prm = os.path.join(work, name + ".prm")
-    with open(prm, "w") as out:
+    # Named apart from the scene files linked above, and never written
+    # through a link: a run must not touch the files it was given.
+    prm = os.path.join(work, name + "-run.prm")
+    if os.path.islink(prm):
+        os.unlink(prm)
+    descriptor = os.open(prm, os.O_WRONLY | os.O_CREAT | os.O_TRUNC |
+                         os.O_NOFOLLOW, 0o644)
+    with os.fdopen(descriptor, "w") as out:
         out.write("\n".join(lines) + "\n")
     print("  " + name, file=sys.stderr)
     command = [SIGNORINI, prm]

@@ -80,11 +80,17 @@ namespace signorini
   ContactParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    const std::string name   = prm.get("Method");
-    method                   = name == "none"    ? Method::none :
-                               name == "penalty" ? Method::penalty :
-                               name == "augmented lagrangian" ? Method::augmented_lagrangian :
-                                                                Method::active_set;
+    const std::string name = prm.get("Method");
+    if (name == "active set")
+      method = Method::active_set;
+    else if (name == "penalty")
+      method = Method::penalty;
+    else if (name == "augmented lagrangian")
+      method = Method::augmented_lagrangian;
+    else if (name == "none")
+      method = Method::none;
+    else
+      throw InputError("Contact/Method", "unknown method '" + name + "'");
     penalty_parameter        = prm.get_double("Penalty parameter");
     multiplier_tolerance     = prm.get_double("Multiplier tolerance");
     max_updates              = prm.get_integer("Maximum updates");

@@ -1,8 +1,4 @@
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_out.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/tria.h>
-
+#include <signorini/contact/height_obstacle.h>
 #include <signorini/contact/obstacle.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
@@ -13,7 +9,7 @@ namespace signorini
 
   template <int dim>
   void
-  Obstacle<dim>::declare_parameters(ParameterHandler &prm)
+  ObstacleParameters<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Obstacle");
     prm.declare_entry("Height",
@@ -32,7 +28,7 @@ namespace signorini
 
   template <int dim>
   void
-  Obstacle<dim>::parse_parameters(ParameterHandler &prm)
+  ObstacleParameters<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Obstacle");
     height = parse_function<dim - 1>(prm.get("Height"), 1, "Obstacle/Height");
@@ -42,44 +38,16 @@ namespace signorini
   }
 
   template <int dim>
-  double
-  Obstacle<dim>::gap(const Point<dim> &p) const
+  std::unique_ptr<Obstacle<dim>>
+  create_obstacle(const ObstacleParameters<dim> &parameters)
   {
-    Point<dim - 1> horizontal;
-    for (unsigned int d = 0; d < dim - 1; ++d)
-      horizontal[d] = p[d];
-    return p[dim - 1] - height->value(horizontal);
+    return std::make_unique<HeightObstacle<dim>>(*parameters.height);
   }
 
-  template <int dim>
-  void
-  Obstacle<dim>::write_vtu(std::ostream &out, const BoundingBox<dim> &box) const
-  {
-    Point<dim - 1>            lower, upper;
-    std::vector<unsigned int> subdivisions(dim - 1, dim == 2 ? 400 : 80);
-    for (unsigned int d = 0; d < dim - 1; ++d)
-      {
-        const double margin = 0.1 * box.side_length(d);
-        lower[d]            = box.lower_bound(d) - margin;
-        upper[d]            = box.upper_bound(d) + margin;
-      }
-    Triangulation<dim - 1> flat;
-    GridGenerator::subdivided_hyper_rectangle(flat, subdivisions, lower, upper);
-    Triangulation<dim - 1, dim> surface;
-    GridGenerator::flatten_triangulation(flat, surface);
-    GridTools::transform(
-      [this](const Point<dim> &p) {
-        Point<dim - 1> horizontal;
-        for (unsigned int d = 0; d < dim - 1; ++d)
-          horizontal[d] = p[d];
-        Point<dim> q = p;
-        q[dim - 1]   = height->value(horizontal);
-        return q;
-      },
-      surface);
-    GridOut().write_vtu(surface, out);
-  }
-
-  template struct Obstacle<2>;
-  template struct Obstacle<3>;
+  template struct ObstacleParameters<2>;
+  template struct ObstacleParameters<3>;
+  template std::unique_ptr<Obstacle<2>>
+  create_obstacle(const ObstacleParameters<2> &);
+  template std::unique_ptr<Obstacle<3>>
+  create_obstacle(const ObstacleParameters<3> &);
 } // namespace signorini

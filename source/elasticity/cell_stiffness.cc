@@ -122,6 +122,39 @@ namespace signorini
     return scaled;
   }
 
+  template <int dim>
+  double
+  cell_internal_force(const Material                      &material,
+                      const FEValues<dim>                 &fe_values,
+                      const TrilinosWrappers::MPI::Vector &u,
+                      Vector<double>                      &internal)
+  {
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
+    fe_values[displacement].get_function_symmetric_gradients(u, strain);
+    internal             = 0;
+    double strain_energy = 0.;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const auto stress = material.template stress<dim>(strain[q]);
+        strain_energy += 0.5 * (strain[q] * stress) * fe_values.JxW(q);
+        for (unsigned int i = 0; i < internal.size(); ++i)
+          internal(i) += fe_values[displacement].symmetric_gradient(i, q) *
+                         stress * fe_values.JxW(q);
+      }
+    return strain_energy;
+  }
+
   template class CellStiffness<2>;
   template class CellStiffness<3>;
+  template double
+  cell_internal_force(const Material &,
+                      const FEValues<2> &,
+                      const TrilinosWrappers::MPI::Vector &,
+                      Vector<double> &);
+  template double
+  cell_internal_force(const Material &,
+                      const FEValues<3> &,
+                      const TrilinosWrappers::MPI::Vector &,
+                      Vector<double> &);
 } // namespace signorini

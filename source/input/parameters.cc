@@ -17,7 +17,7 @@ namespace signorini
     Geometry<2>::declare_parameters(prm);
     Material::declare_parameters(prm);
     BoundaryConditions<2>::declare_parameters(prm);
-    Obstacle<2>::declare_parameters(prm);
+    ObstacleParameters<2>::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     Refinement::declare_parameters(prm);

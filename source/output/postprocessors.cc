@@ -67,7 +67,10 @@ namespace signorini
         fields[5] = s[0][2];
         fields[6] = s[1][2];
       }
-    fields[n_fields - 1] = obstacle.gap(point) + displacement[dim - 1];
+    // The deformed gap along the obstacle's normal.
+    Tensor<1, dim> normal;
+    const double   gap   = obstacle.gap(point, normal);
+    fields[n_fields - 1] = gap + normal * displacement;
   }
 
   template class DisplacementFields<2>;

@@ -115,11 +115,9 @@ namespace signorini
                   const double phi = fe_values.shape_value(i, q);
                   displacement[component[i]] += u[i] * phi;
                   gradient[component[i]] += u[i] * fe_values.shape_grad(i, q);
-                  if (component[i] == dim - 1)
-                    {
-                      p += pressure[i] * phi;
-                      a += active[i] * phi;
-                    }
+                  // Nodal scalars sit at one component, zero elsewhere.
+                  p += pressure[i] * phi;
+                  a += active[i] * phi;
                 }
               const Point<dim> &x     = fe_values.quadrature_point(q);
               const std::size_t point = c * n_vertices + q;

@@ -4,7 +4,6 @@
 #include <signorini/problem/contact_problem.h>
 
 #include <chrono>
-#include <cstdio>
 
 namespace signorini
 {
@@ -21,20 +20,19 @@ namespace signorini
     // initial guess.
     const auto saved_solution = solution;
     solution                  = 0;
-    matrix_assembled          = false;
+    elastic_operator->invalidate();
 
     MPI_Barrier(mpi_communicator);
     const auto start = std::chrono::steady_clock::now();
-    assemble_load();
-    assemble_newton_system();
-    solve(true);
+    elastic_operator->assemble_load();
+    newton.solve(true);
     MPI_Barrier(mpi_communicator);
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
 
-    solution         = saved_solution;
-    matrix_assembled = false;
+    solution = saved_solution;
+    elastic_operator->invalidate();
     return seconds;
   }
 
@@ -48,42 +46,18 @@ namespace signorini
     complete.peak_memory =
       Utilities::MPI::sum(static_cast<double>(memory.VmHWM), mpi_communicator) /
       1024.;
-    cycle_timings.push_back(complete);
+    record.add_timings(complete);
 
     write_collectively(mpi_communicator, [&]() {
       if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
         return;
-      write_atomically(
-        parameters.output.directory + "/timings.csv", [&](std::ostream &out) {
-          out << "cycle,dofs,iterations,contact_solve,linear_solve,ratio,"
-                 "run_time,peak_memory\n";
-          char line[256];
-          for (const auto &t : cycle_timings)
-            {
-              const auto &stats = cycle_statistics[t.cycle];
-              std::snprintf(line,
-                            sizeof(line),
-                            "%u,%llu,%u,%.6f,%.6f,%.3f,%.6f,%.1f\n",
-                            t.cycle,
-                            static_cast<unsigned long long>(stats.dofs),
-                            stats.iterations,
-                            t.contact_solve,
-                            t.linear_solve,
-                            t.contact_solve / t.linear_solve,
-                            t.run_time,
-                            t.peak_memory);
-              out << line;
-            }
-        });
+      write_atomically(parameters.output.directory + "/timings.csv",
+                       [&](std::ostream &out) {
+                         out << record.timings_table();
+                       });
     });
   }
 
-  template double
-  ContactProblem<2>::time_linear_solve();
-  template double
-  ContactProblem<3>::time_linear_solve();
-  template void
-  ContactProblem<2>::write_timings(const CycleTimings &);
-  template void
-  ContactProblem<3>::write_timings(const CycleTimings &);
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace signorini

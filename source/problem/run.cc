@@ -1,9 +1,12 @@
 #include <deal.II/base/utilities.h>
+#include <deal.II/numerics/error_estimator.h>
 
 #include <signorini/base/memory.h>
+#include <signorini/base/text.h>
 #include <signorini/problem/contact_problem.h>
 
 #include <chrono>
+#include <set>
 
 namespace signorini
 {
@@ -46,7 +49,17 @@ namespace signorini
         .count();
     };
     double run_time = 0., start = now();
-    make_grid();
+    {
+      TimerOutput::Scope           t(timer, "Setup: grid");
+      std::set<types::boundary_id> dirichlet_ids;
+      for (const auto &[id, mask] : parameters.boundary_conditions.dirichlet)
+        dirichlet_ids.insert(id);
+      discretisation.make_grid(
+        {{"Boundary conditions/Dirichlet", dirichlet_ids},
+         {"Boundary conditions/Traction boundary ids",
+          parameters.boundary_conditions.traction_ids},
+         {"Obstacle/Contact boundary ids", parameters.obstacle.contact_ids}});
+    }
     setup_system();
     run_time += now() - start;
     const unsigned int first_cycle = start_output(resume, run_time);
@@ -60,22 +73,17 @@ namespace signorini
         if (cycle > 0)
           refine_grid();
         pcout << "Cycle " << cycle << ": "
-              << triangulation->n_global_active_cells() << " cells, "
-              << dof_handler.n_dofs() << " dofs" << std::endl;
+              << discretisation.triangulation().n_global_active_cells()
+              << " cells, " << discretisation.dof_handler().n_dofs() << " dofs"
+              << std::endl;
         const double solve_start = now();
-        solve_contact_problem(cycle);
+        solve(cycle);
         timings.contact_solve = now() - solve_start;
-        // The matrix and its factorisation or AMG are rebuilt on the next
-        // mesh: free them before the error estimate and the output's
-        // patches take their memory. (The timing table solves once more on
-        // this mesh.)
+        // The system is built anew on the next mesh: free it before the
+        // error estimate and the output's patches take their memory. (The
+        // timing table solves once more on this mesh.)
         if (!parameters.output.timing_table)
-          {
-            linear_system_solver.reset();
-            system_matrix.clear();
-            matrix_assembled = false;
-            release_free_memory();
-          }
+          elastic_operator->release();
         estimate_error();
         run_time += now() - start;
         timings.run_time = run_time;
@@ -104,17 +112,53 @@ namespace signorini
           1024.;
         pcout << "Peak memory: " << number(peak) << " MB on "
               << Utilities::MPI::n_mpi_processes(mpi_communicator)
-              << " processes, " << number(peak * 1024. / dof_handler.n_dofs())
+              << " processes, "
+              << number(peak * 1024. / discretisation.dof_handler().n_dofs())
               << " kB per dof of the final mesh" << std::endl;
       }
   }
 
-  template void
-  ContactProblem<2>::run_cycles(bool);
-  template void
-  ContactProblem<3>::run_cycles(bool);
-  template void
-  ContactProblem<2>::run(bool);
-  template void
-  ContactProblem<3>::run(bool);
+  template <int dim>
+  void
+  ContactProblem<dim>::solve(const unsigned int cycle)
+  {
+    elastic_operator->assemble_load();
+    newton.start_cycle();
+    strategy->solve(newton, cycle);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::estimate_error()
+  {
+    TimerOutput::Scope t(timer, "Refine: error estimate");
+    estimated_error_per_cell.reinit(
+      discretisation.triangulation().n_active_cells());
+    KellyErrorEstimator<dim>::estimate(discretisation.mapping(),
+                                       discretisation.dof_handler(),
+                                       discretisation.face_quadrature(),
+                                       {},
+                                       solution,
+                                       estimated_error_per_cell);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::refine_grid()
+  {
+    TimerOutput::Scope t(timer, "Refine: mesh and transfer");
+    // The next cycle starts from this one's displacement and active set
+    // when the mesh adaptation carries them over (not across a remesh).
+    auto carried =
+      discretisation.refine(estimated_error_per_cell, {&solution, &pressure});
+    setup_system();
+    if (!carried.empty())
+      {
+        solution = carried[0];
+        pressure = carried[1];
+      }
+  }
+
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace signorini

@@ -4,6 +4,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <signorini/elasticity/material.h>
 
@@ -65,6 +67,16 @@ namespace signorini
     unsigned int                                lookups = 0;
     dealii::FullMatrix<double>                  scaled;
   };
+  /** The internal force vector of the cell @p fe_values was reinit'ed on
+   * (with gradients and JxW values), the integral of eps(phi_i) : sigma(u)
+   * [N], for the ghosted displacement @p u; returns the cell's strain energy
+   * 1/2 a(u,u) [N mm]. */
+  template <int dim>
+  double
+  cell_internal_force(const Material                              &material,
+                      const dealii::FEValues<dim>                 &fe_values,
+                      const dealii::TrilinosWrappers::MPI::Vector &u,
+                      dealii::Vector<double>                      &internal);
 } // namespace signorini
 
 #endif

@@ -31,7 +31,7 @@ namespace signorini
     Geometry<dim>           geometry;
     Material                material;
     BoundaryConditions<dim> boundary_conditions;
-    Obstacle<dim>           obstacle;
+    ObstacleParameters<dim> obstacle;
     ContactParameters       contact;
     LinearSolverParameters  linear_solver;
     Refinement              refinement;

@@ -16,7 +16,7 @@ namespace signorini
    * The scalar fields of a solution file that follow from the displacement at
    * a point: `von_mises` and the components `stress_xx`, `stress_yy`,
    * `stress_zz`, `stress_xy`[, `stress_xz`, `stress_yz`] [MPa], then `gap`
-   * [mm], the vertical distance of the deformed point above the obstacle,
+   * [mm], the gap of the deformed point along the obstacle's normal,
    * y + u_y - psi(x) (z + u_z - psi(x, y) in 3D), negative inside it. In 2D,
    * stress_zz is the out-of-plane stress (zero in plane stress).
    *

@@ -42,7 +42,7 @@ namespace signorini
    * (with the default subdivision, 1). All fields are evaluated in one pass
    * per cell: one FEValues at the vertices gives the displacement and its
    * gradient, and the pressure and the active set, which are nodal vectors
-   * in the layout of the displacement, in its vertical component. The
+   * in the layout of the displacement, at one component per node. The
    * cells are split evenly among @p n_threads threads (each with its own
    * FEValues), which write to disjoint parts of the arrays.
    */

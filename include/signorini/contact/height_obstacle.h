@@ -1,0 +1,45 @@
+#ifndef signorini_contact_height_obstacle_h
+#define signorini_contact_height_obstacle_h
+
+#include <deal.II/base/function.h>
+
+#include <signorini/contact/obstacle.h>
+
+namespace signorini
+{
+  /**
+   * An obstacle below the body whose surface is the graph of a height
+   * function, y = psi(x) in 2D and z = psi(x, y) in 3D. The gap of a point
+   * is its height above the surface, measured along the vertical, which is
+   * the normal: the body approaches the obstacle from above (along -y, -z).
+   */
+  template <int dim>
+  class HeightObstacle : public Obstacle<dim>
+  {
+  public:
+    /** @p height is psi [mm], a function of dim - 1 coordinates. */
+    HeightObstacle(const dealii::Function<dim - 1> &height);
+
+    double
+    gap(const dealii::Point<dim> &point,
+        dealii::Tensor<1, dim>   &normal) const override;
+
+    std::string
+    entry() const override;
+
+    /** The surface over the horizontal extent of @p box, enlarged by a tenth
+     * on each side. */
+    void
+    write_vtu(std::ostream                   &out,
+              const dealii::BoundingBox<dim> &box) const override;
+
+  private:
+    /** psi at the horizontal coordinates of @p point. */
+    double
+    height_at(const dealii::Point<dim> &point) const;
+
+    const dealii::Function<dim - 1> &height;
+  };
+} // namespace signorini
+
+#endif

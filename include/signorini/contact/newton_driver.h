@@ -1,0 +1,138 @@
+#ifndef signorini_contact_newton_driver_h
+#define signorini_contact_newton_driver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <signorini/contact/contact_parameters.h>
+#include <signorini/contact/contact_strategy.h>
+#include <signorini/contact/contact_surface.h>
+#include <signorini/discretisation/discretisation.h>
+#include <signorini/elasticity/elastic_operator.h>
+
+#include <cstddef>
+#include <utility>
+
+namespace signorini
+{
+  /**
+   * The semismooth Newton iteration of every contact strategy: assemble and
+   * solve the Newton system of the current active set, compute the contact
+   * forces and the residual, update the active set; until the active set is
+   * settled and the residual small, with cycle detection, stall detection and
+   * the strategy's cycle breaking. It writes the displacement and the
+   * contact pressure.
+   */
+  template <int dim>
+  class NewtonDriver
+  {
+  public:
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+    /** @p solution and @p pressure are the ghosted displacement [mm] and
+     * nodal contact pressure [MPa] (at each contact node's scalar dof). */
+    NewtonDriver(const Discretisation<dim> &discretisation,
+                 ElasticOperator<dim>      &elastic_operator,
+                 ContactSurface<dim>       &surface,
+                 ContactStrategy<dim>      &strategy,
+                 const ContactParameters   &parameters,
+                 const bool                 verbose,
+                 VectorType                &solution,
+                 VectorType                &pressure,
+                 dealii::ConditionalOStream &pcout,
+                 dealii::TimerOutput        &timer);
+
+    /** Sizes the residual for the current mesh. */
+    void
+    reinit();
+
+    /** Starts a cycle: no iterations yet. */
+    void
+    start_cycle();
+
+    /** Marks the nodes active that touch or penetrate, or that the
+     * strategy's rule makes active, from the current displacement and
+     * pressure. */
+    void
+    initialize_active_set();
+
+    /** Newton iterations from the current active set until it settles
+     * (Contact/Tolerance, Contact/Maximum iterations). Throws SolverFailure.
+     */
+    void
+    iterate(const unsigned int cycle);
+
+    /** One linear solve with the current active set and its contact forces
+     * (Contact/Method = none). */
+    void
+    solve_once();
+
+    /** Solves the Newton system of the current active set. */
+    void
+    solve(const bool final_step);
+
+    /** The Newton iterations of this cycle. */
+    unsigned int
+    iterations() const;
+
+    /** The contact surface. */
+    const ContactSurface<dim> &
+    contact_surface() const;
+
+    /** The contact pressure [MPa] at the contact nodes' scalar dofs. */
+    const VectorType &
+    pressure() const;
+
+    /** K u - f with the contact dofs free: the obstacle's nodal force [N]. */
+    const VectorType &
+    residual() const;
+
+    /** The smallest cell diameter of the mesh [mm]. */
+    double
+    minimal_cell_diameter() const;
+
+    /** Whether each iteration is reported. */
+    bool
+    verbose_output() const;
+
+    MPI_Comm
+    mpi_communicator() const;
+
+    /** The size of the active set and a hash of it, on every process. */
+    std::pair<unsigned int, std::size_t>
+    active_set_signature() const;
+
+  private:
+    /** Pressure and residual from the current displacement; returns the
+     * norm of the nonlinear residual (force balance and complementarity)
+     * relative to the load. */
+    double
+    compute_contact_forces();
+
+    /** Applies the strategy's rule; returns the number of changes. */
+    unsigned int
+    update_active_set();
+
+    /** After a solve without contact: the nodes where contact begins, those
+     * that the displacement scaled by the smallest factor brings onto the
+     * obstacle. Returns the number of changes. */
+    unsigned int
+    activate_first_contact();
+
+    const Discretisation<dim>  &discretisation;
+    ElasticOperator<dim>       &elastic_operator;
+    ContactSurface<dim>        &surface;
+    ContactStrategy<dim>       &strategy;
+    const ContactParameters    &parameters;
+    const bool                  verbose;
+    VectorType                 &solution;
+    VectorType                 &contact_pressure;
+    VectorType                  contact_residual;
+    dealii::ConditionalOStream &pcout;
+    dealii::TimerOutput        &timer;
+    unsigned int                newton_iterations = 0;
+  };
+} // namespace signorini
+
+#endif

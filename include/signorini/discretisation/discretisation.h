@@ -1,0 +1,157 @@
+#ifndef signorini_discretisation_discretisation_h
+#define signorini_discretisation_discretisation_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <signorini/discretisation/geometry.h>
+#include <signorini/elasticity/boundary_conditions.h>
+#include <signorini/mesh_adaptation/refinement_parameters.h>
+
+#include <memory>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace signorini
+{
+  template <int dim>
+  class MeshAdaptation;
+
+  /**
+   * The discretisation of the body: its mesh (and where each cycle's mesh
+   * comes from), the finite element (Q1 on quadrilaterals/hexahedra, P1 on
+   * triangles/tetrahedra, dim components), the mapping and quadratures, the
+   * dofs with their index sets, and the constraints that stay fixed within a
+   * cycle: hanging nodes, and those plus the Dirichlet data.
+   */
+  template <int dim>
+  class Discretisation
+  {
+  public:
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+    Discretisation(const Geometry<dim>           &geometry,
+                   const Refinement              &refinement,
+                   const BoundaryConditions<dim> &boundary_conditions,
+                   const MPI_Comm                 mpi_communicator);
+    ~Discretisation();
+
+    /** The boundary ids that an entry (named first) refers to. */
+    using BoundaryIdUse =
+      std::vector<std::pair<std::string, std::set<dealii::types::boundary_id>>>;
+
+    /** The mesh of cycle 0, with its element, mapping and quadratures, and
+     * its dofs. Throws InputError for a mesh that mixes cell types, or one
+     * that lacks a boundary id of @p boundary_ids (naming the entry). */
+    void
+    make_grid(const BoundaryIdUse &boundary_ids);
+
+    /**
+     * The next cycle's mesh, guided by the cell error @p indicators, with its
+     * dofs set up. Returns the ghosted @p vectors interpolated to the new
+     * dofs (not ghosted; the first one with the constraints applied), or
+     * nothing if the adaptation cannot carry them (a remesh).
+     */
+    std::vector<VectorType>
+    refine(const dealii::Vector<float>           &indicators,
+           const std::vector<const VectorType *> &vectors);
+
+    /** Whether save() can store the mesh (a p4est mesh); otherwise cycle k's
+     * mesh is the initial one refined globally k times. */
+    bool
+    saves_mesh() const;
+
+    /** Stores the mesh to @p file with @p vectors and the cell values
+     * @p cell_data attached (collective). */
+    void
+    save(const std::string                     &file,
+         const std::vector<const VectorType *> &vectors,
+         const dealii::Vector<float>           &cell_data) const;
+
+    /** Replaces the mesh by the one saved to @p file and sets up its dofs;
+     * fills @p vectors (locally owned) and @p cell_data from it. */
+    void
+    load(const std::string               &file,
+         const std::vector<VectorType *> &vectors,
+         dealii::Vector<float>           &cell_data);
+
+    /** Refines the mesh globally @p times and sets up its dofs. */
+    void
+    refine_globally(const unsigned int times);
+
+    /** The smallest cell diameter of the mesh [mm]. */
+    double
+    minimal_cell_diameter() const;
+
+    /** The diagonal of the initial mesh's bounding box [mm]. */
+    double
+    body_size() const;
+
+    bool
+    simplex() const;
+
+    const dealii::Triangulation<dim> &
+    triangulation() const;
+    const dealii::DoFHandler<dim> &
+    dof_handler() const;
+    const dealii::FiniteElement<dim> &
+    fe() const;
+    const dealii::Mapping<dim> &
+    mapping() const;
+    const dealii::Quadrature<dim> &
+    quadrature() const;
+    const dealii::Quadrature<dim - 1> &
+    face_quadrature() const;
+    const dealii::IndexSet &
+    locally_owned_dofs() const;
+    const dealii::IndexSet &
+    locally_relevant_dofs() const;
+    /** Hanging nodes alone. */
+    const dealii::AffineConstraints<double> &
+    hanging_node_constraints() const;
+    /** Hanging nodes and Dirichlet data. */
+    const dealii::AffineConstraints<double> &
+    constraints() const;
+    /** Dofs on a Dirichlet boundary in a fixed component: where the support
+     * reactions act. */
+    const dealii::IndexSet &
+    support_dofs() const;
+    MPI_Comm
+    mpi_communicator() const;
+
+  private:
+    void
+    setup_dofs();
+
+    const Geometry<dim>           &geometry;
+    const Refinement              &refinement;
+    const BoundaryConditions<dim> &boundary_conditions;
+    MPI_Comm                       communicator;
+
+    std::unique_ptr<MeshAdaptation<dim>>        mesh_adaptation;
+    std::unique_ptr<dealii::Triangulation<dim>> mesh;
+    bool                                        simplex_cells = false;
+    double                                      diagonal      = 0.;
+    std::unique_ptr<dealii::FiniteElement<dim>> element;
+    const dealii::Mapping<dim>                 *linear_mapping = nullptr;
+    dealii::Quadrature<dim>                     cell_rule;
+    dealii::Quadrature<dim - 1>                 face_rule;
+    dealii::DoFHandler<dim>                     dofs;
+    dealii::IndexSet                            owned_dofs;
+    dealii::IndexSet                            relevant_dofs;
+    dealii::AffineConstraints<double>           hanging_nodes;
+    dealii::AffineConstraints<double>           fixed_constraints;
+    dealii::IndexSet                            supported_dofs;
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,65 @@
+#ifndef signorini_elasticity_elastic_operator_h
+#define signorini_elasticity_elastic_operator_h
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <signorini/contact/contact_linearisation.h>
+
+namespace signorini
+{
+  /**
+   * The linear elastic operator of the body on the current mesh: its load,
+   * its residual, and the solution of a Newton system, the elastic operator
+   * with a contact strategy's linearisation. Implementations:
+   * AssembledOperator (a Trilinos matrix, cell stiffness cache, direct or
+   * AMG-CG solves with their reuse).
+   */
+  template <int dim>
+  class ElasticOperator
+  {
+  public:
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+    virtual ~ElasticOperator() = default;
+
+    /** Sizes the operator for the discretisation's current dofs; forgets
+     * everything of the previous mesh. */
+    virtual void
+    reinit() = 0;
+
+    /** Assembles the load vector f [N] of the current mesh. */
+    virtual void
+    assemble_load() = 0;
+
+    /** The load vector f [N]. */
+    virtual const VectorType &
+    load() const = 0;
+
+    /** @p residual = K u - f [N] for the ghosted displacement @p u, with the
+     * hanging nodes and the Dirichlet dofs condensed. */
+    virtual void
+    residual(const VectorType &u, VectorType &residual) = 0;
+
+    /**
+     * Solves the Newton system of @p linearisation for the ghosted
+     * displacement @p u, which is the initial guess of an iterative solver
+     * and is returned with all constraints satisfied. Iterative solvers stop
+     * at Linear solver/Tolerance on the @p final_step of a Newton iteration,
+     * at its Newton tolerance before. Throws SolverFailure.
+     */
+    virtual void
+    solve(const ContactLinearisation<dim> &linearisation,
+          VectorType                      &u,
+          const bool                       final_step) = 0;
+
+    /** Forgets the system assembled last: the next solve assembles anew. */
+    virtual void
+    invalidate() = 0;
+
+    /** Frees the memory of the system until the next reinit(). */
+    virtual void
+    release() = 0;
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,115 @@
+#ifndef signorini_output_run_record_h
+#define signorini_output_run_record_h
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace signorini
+{
+  /** One row of statistics.csv: named columns in their order. */
+  class StatisticsRow
+  {
+  public:
+    /** Adds a column written as a number with 11 significant digits. */
+    void
+    add(const std::string &name, const double value);
+
+    /** Adds a column written as a whole number. */
+    void
+    add_count(const std::string &name, const std::uint64_t value);
+
+    /** The value of the column @p name; throws std::out_of_range if the row
+     * has no such column. */
+    double
+    value(const std::string &name) const;
+
+    /** The header line (names separated by ','). */
+    std::string
+    header() const;
+
+    /** The row as a line of statistics.csv. */
+    std::string
+    line() const;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &names &values &counts;
+    }
+
+  private:
+    std::vector<std::string> names;
+    std::vector<double>      values;
+    /** Whether each column is a whole number. */
+    std::vector<bool> counts;
+  };
+
+  /** The costs of one cycle, one row of timings.csv. */
+  struct CycleTimings
+  {
+    unsigned int cycle = 0;
+    /** Wall time of the contact solve [s]. */
+    double contact_solve = 0.;
+    /** Wall time of one linear elasticity solve on the same mesh [s]. */
+    double linear_solve = 0.;
+    /** Wall time since the start, without output and linear_solve [s]. */
+    double run_time = 0.;
+    /** Peak resident memory, summed over the processes [MB]. */
+    double peak_memory = 0.;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &cycle &contact_solve &linear_solve &run_time &peak_memory;
+    }
+  };
+
+  /**
+   * What a run has recorded so far: a statistics row and a timings row per
+   * cycle, and the solution files of the series. It writes the series'
+   * records (solution.pvd, statistics.csv, timings.csv) and saves and loads
+   * itself for checkpoints.
+   */
+  class RunRecord
+  {
+  public:
+    void
+    add_statistics(const StatisticsRow &row);
+
+    void
+    add_timings(const CycleTimings &row);
+
+    /** Cycle @p cycle's solution file @p name (relative to the output
+     * directory). */
+    void
+    add_solution_file(const unsigned int cycle, const std::string &name);
+
+    /** The records that list the cycles so far, by file name:
+     * solution.pvd and statistics.csv. */
+    std::map<std::string, std::string>
+    series_records() const;
+
+    /** The text of timings.csv. */
+    std::string
+    timings_table() const;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &statistics &timings &solution_files;
+    }
+
+  private:
+    std::vector<StatisticsRow>                  statistics;
+    std::vector<CycleTimings>                   timings;
+    std::vector<std::pair<double, std::string>> solution_files;
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,167 @@
+#include <deal.II/base/mpi.h>
+
+#include <signorini/base/failures.h>
+#include <signorini/base/text.h>
+#include <signorini/contact/augmented_lagrangian_strategy.h>
+#include <signorini/contact/newton_driver.h>
+#include <signorini/contact/penalty_strategy.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  AugmentedLagrangianStrategy<dim>::AugmentedLagrangianStrategy(
+    const ContactParameters &parameters,
+    const double             young_modulus,
+    ConditionalOStream      &pcout)
+    : parameters(parameters)
+    , young_modulus(young_modulus)
+    , pcout(pcout)
+  {
+  }
+
+  template <int dim>
+  std::string
+  AugmentedLagrangianStrategy<dim>::name() const
+  {
+    return "augmented lagrangian";
+  }
+
+  template <int dim>
+  void
+  AugmentedLagrangianStrategy<dim>::solve(NewtonDriver<dim> &newton,
+                                          const unsigned int cycle)
+  {
+    epsilon = penalty_compliance(parameters,
+                                 newton.minimal_cell_diameter(),
+                                 young_modulus);
+    touching_tolerance = newton.contact_surface().touching_tolerance();
+    multiplier_updates = 0;
+    // The multipliers start from the previous cycle's pressure (zero on
+    // cycle 0).
+    const auto &nodes = newton.contact_surface().nodes();
+    multipliers.assign(nodes.size(), 0.);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (nodes[i].owned)
+        multipliers[i] = std::max(
+          0., static_cast<double>(newton.pressure()(nodes[i].scalar_dof)));
+    newton.initialize_active_set();
+    double previous_change = 0.;
+    for (;;)
+      {
+        newton.iterate(cycle);
+        const double change = update_multipliers(newton);
+        ++multiplier_updates;
+        if (newton.verbose_output())
+          pcout << "   multiplier update " << multiplier_updates
+                << ": relative change " << number(change) << std::endl;
+        if (change <= parameters.multiplier_tolerance)
+          return;
+        if (multiplier_updates >= parameters.max_updates)
+          throw SolverFailure(
+            exit_status::multipliers_slow,
+            "contact solver (augmented lagrangian): the multipliers still "
+            "change by " +
+              number(change) + " after " + std::to_string(multiplier_updates) +
+              " updates on cycle " + std::to_string(cycle) +
+              " (Contact/Maximum updates; a smaller Contact/Penalty "
+              "parameter converges faster)");
+        // The multipliers converge by about r / (1 + r) per update, r =
+        // epsilon E / h: if they shrink by less than half, the penalty is too
+        // soft for this mesh. Stiffen it tenfold (one more factorisation).
+        const double rate = previous_change > 0 ? change / previous_change : 0;
+        previous_change   = change;
+        if (parameters.remedies && rate > 0.5)
+          {
+            epsilon /= 10.;
+            previous_change = 0.;
+            pcout << "   remedy: the multipliers change by a factor of "
+                  << number(rate) << " per update on update "
+                  << multiplier_updates << "; penalty stiffened to epsilon = "
+                  << number(epsilon) << std::endl;
+          }
+      }
+  }
+
+  template <int dim>
+  double
+  AugmentedLagrangianStrategy<dim>::update_multipliers(
+    const NewtonDriver<dim> &newton)
+  {
+    // Uzawa: the multiplier takes the pressure of the inner solution,
+    // [lambda - gap / epsilon]_+, which differs from lambda by the
+    // penetration / epsilon.
+    double      change = 0., largest = 0.;
+    const auto &nodes = newton.contact_surface().nodes();
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (nodes[i].owned)
+        {
+          const double p = std::max(
+            0., static_cast<double>(newton.pressure()(nodes[i].scalar_dof)));
+          change         = std::max(change, std::abs(p - multipliers[i]));
+          largest        = std::max(largest, p);
+          multipliers[i] = p;
+        }
+    change  = Utilities::MPI::max(change, newton.mpi_communicator());
+    largest = Utilities::MPI::max(largest, newton.mpi_communicator());
+    return largest > 0 ? change / largest : 0.;
+  }
+
+  template <int dim>
+  bool
+  AugmentedLagrangianStrategy<dim>::update_rule(const unsigned int i,
+                                                const ContactNode<dim> &,
+                                                const double gap,
+                                                const double) const
+  {
+    // Where the pressure multiplier - gap / epsilon is positive, a gap
+    // counting as negative only beyond round-off.
+    return gap + touching_tolerance < epsilon * multipliers[i];
+  }
+
+  template <int dim>
+  void
+  AugmentedLagrangianStrategy<dim>::linearise(
+    const ContactSurface<dim>   &surface,
+    ContactLinearisation<dim> &linearisation) const
+  {
+    add_penalty_springs(surface, epsilon, multipliers, linearisation);
+  }
+
+  template <int dim>
+  double
+  AugmentedLagrangianStrategy<dim>::complementarity_force(
+    const unsigned int      i,
+    const ContactNode<dim> &node,
+    const double,
+    const double,
+    const double gap) const
+  {
+    return node.mass * std::max(0., multipliers[i] - gap / epsilon);
+  }
+
+  template <int dim>
+  std::string
+  AugmentedLagrangianStrategy<dim>::failure_hint() const
+  {
+    return " is Contact/Penalty parameter too small?";
+  }
+
+  template <int dim>
+  void
+  AugmentedLagrangianStrategy<dim>::report(StatisticsRow      &row,
+                                           ConditionalOStream &pcout) const
+  {
+    row.add_count("multiplier_updates", multiplier_updates);
+    row.add("penalty_parameter", epsilon);
+    pcout << "   " << multiplier_updates << " multiplier updates, "
+          << "penalty parameter " << epsilon << std::endl;
+  }
+
+  template class AugmentedLagrangianStrategy<2>;
+  template class AugmentedLagrangianStrategy<3>;
+} // namespace signorini

@@ -1,0 +1,359 @@
+#include <deal.II/base/mpi.h>
+
+#include <signorini/base/failures.h>
+#include <signorini/base/text.h>
+#include <signorini/contact/newton_driver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  NewtonDriver<dim>::NewtonDriver(const Discretisation<dim> &discretisation,
+                                  ElasticOperator<dim>      &elastic_operator,
+                                  ContactSurface<dim>       &surface,
+                                  ContactStrategy<dim>      &strategy,
+                                  const ContactParameters   &parameters,
+                                  const bool                 verbose,
+                                  VectorType                &solution,
+                                  VectorType                &pressure,
+                                  ConditionalOStream        &pcout,
+                                  TimerOutput               &timer)
+    : discretisation(discretisation)
+    , elastic_operator(elastic_operator)
+    , surface(surface)
+    , strategy(strategy)
+    , parameters(parameters)
+    , verbose(verbose)
+    , solution(solution)
+    , contact_pressure(pressure)
+    , pcout(pcout)
+    , timer(timer)
+  {
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::reinit()
+  {
+    contact_residual.reinit(discretisation.locally_owned_dofs(),
+                            discretisation.mpi_communicator());
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::start_cycle()
+  {
+    newton_iterations = 0;
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::initialize_active_set()
+  {
+    // From the previous cycle's displacement and pressure (zero on cycle 0),
+    // with the touching and penetrating nodes active from the start, so that
+    // a body held only by the obstacle is supported in the first solve.
+    auto &nodes = surface.nodes();
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const double gap = surface.deformed_gap(nodes[i], solution);
+        nodes[i].active =
+          gap <= surface.touching_tolerance() ||
+          strategy.update_rule(i,
+                               nodes[i],
+                               gap,
+                               contact_pressure(nodes[i].scalar_dof));
+      }
+  }
+
+  template <int dim>
+  unsigned int
+  NewtonDriver<dim>::update_active_set()
+  {
+    TimerOutput::Scope t(timer, "Active set: update");
+    unsigned int       changes = 0;
+    auto              &nodes   = surface.nodes();
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const bool active =
+          strategy.update_rule(i,
+                               nodes[i],
+                               surface.deformed_gap(nodes[i], solution),
+                               contact_pressure(nodes[i].scalar_dof));
+        if (nodes[i].owned && active != nodes[i].active)
+          ++changes;
+        nodes[i].active = active;
+      }
+    return Utilities::MPI::sum(changes, discretisation.mpi_communicator());
+  }
+
+  template <int dim>
+  unsigned int
+  NewtonDriver<dim>::activate_first_contact()
+  {
+    // After a solve with no contact at all, the displacement is proportional
+    // to the load: scaled by theta_i = gap_i / (-u_i.n_i), node i just
+    // touches. The nodes with the smallest theta are where contact begins;
+    // starting from them, rather than from every penetrating node, spares
+    // the iteration from releasing the wrongly active ones one by one.
+    const MPI_Comm comm      = discretisation.mpi_communicator();
+    double         theta_min = std::numeric_limits<double>::max();
+    for (const auto &node : surface.nodes())
+      {
+        const double u = node.normal_displacement(solution);
+        if (u < 0)
+          theta_min = std::min(theta_min, node.gap / -u);
+      }
+    theta_min = Utilities::MPI::min(theta_min, comm);
+    if (theta_min >= 1.)
+      return 0; // nothing penetrates: the contact-free solution stands
+
+    unsigned int changes = 0;
+    for (auto &node : surface.nodes())
+      {
+        const double u = node.normal_displacement(solution);
+        node.active    = u < 0 && node.gap / -u <= theta_min * (1. + 1e-6);
+        changes += node.owned && node.active ? 1 : 0;
+      }
+    return Utilities::MPI::sum(changes, comm);
+  }
+
+  template <int dim>
+  double
+  NewtonDriver<dim>::compute_contact_forces()
+  {
+    TimerOutput::Scope t(timer, "Active set: contact forces");
+    elastic_operator.residual(solution, contact_residual);
+
+    // The residual K u - f at a free contact node, along its normal, is the
+    // obstacle's nodal force lambda_i; the pressure is lambda_i / m_i. The
+    // nonlinear residual combines the force balance at all other free dofs
+    // with the strategy's complementarity function at the contact dofs.
+    const MPI_Comm comm = discretisation.mpi_communicator();
+    VectorType     owned_pressure(discretisation.locally_owned_dofs(), comm);
+    VectorType     balance(contact_residual);
+    double         complementarity = 0., contact_force = 0.;
+    const auto    &nodes = surface.nodes();
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (nodes[i].owned)
+        {
+          const auto  &node   = nodes[i];
+          const double lambda = node.normal_displacement(contact_residual);
+          const double p      = node.mass > 0 ? lambda / node.mass : 0.;
+          const double expected = strategy.complementarity_force(
+            i, node, lambda, p, surface.deformed_gap(node, solution));
+          owned_pressure(node.scalar_dof) = p;
+          // The force balance along the obstacle's surface remains.
+          for (unsigned int d = 0; d < dim; ++d)
+            balance(node.dofs[d]) =
+              contact_residual(node.dofs[d]) - lambda * node.normal[d];
+          complementarity += (lambda - expected) * (lambda - expected);
+          contact_force += lambda * lambda;
+        }
+    owned_pressure.compress(VectorOperation::insert);
+    balance.compress(VectorOperation::insert);
+    contact_pressure = owned_pressure;
+
+    const double balance_norm = balance.l2_norm();
+    complementarity    = Utilities::MPI::sum(complementarity, comm);
+    contact_force      = Utilities::MPI::sum(contact_force, comm);
+    const double scale = elastic_operator.load().l2_norm() + std::sqrt(contact_force);
+    return std::sqrt(balance_norm * balance_norm + complementarity) /
+           (scale > 0 ? scale : 1.);
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::solve(const bool final_step)
+  {
+    ContactLinearisation<dim> linearisation;
+    strategy.linearise(surface, linearisation);
+    try
+      {
+        elastic_operator.solve(linearisation, solution, final_step);
+      }
+    catch (const SolverFailure &failure)
+      {
+        throw SolverFailure(failure.status,
+                            std::string(failure.what()) +
+                              " (is the body held against rigid motion?" +
+                              strategy.failure_hint() + ")");
+      }
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::solve_once()
+  {
+    solve(true);
+    compute_contact_forces();
+    newton_iterations = 1;
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::iterate(const unsigned int cycle)
+  {
+    std::vector<std::pair<unsigned int, std::size_t>> visited = {
+      surface.active_set_signature()};
+    double       previous_residual = 0.;
+    unsigned int previous_changes  = 1;
+    // Inexact Newton: the linear solves are loose while the active set
+    // still changes, and tight once an update left it as it was.
+    bool settled = false;
+    for (unsigned int iteration = 1; iteration <= parameters.max_iterations;
+         ++iteration)
+      {
+        const bool contact_free = visited.back().first == 0;
+        solve(settled);
+        ++newton_iterations;
+        const double       residual_norm = compute_contact_forces();
+        const unsigned int changes =
+          contact_free ? activate_first_contact() : update_active_set();
+        const auto signature = surface.active_set_signature();
+        settled              = changes == 0;
+
+        if (verbose)
+          {
+            char line[160];
+            std::snprintf(line,
+                          sizeof(line),
+                          "   iteration %2u: residual %.3e, %u active, %u "
+                          "changed",
+                          iteration,
+                          residual_norm,
+                          signature.first,
+                          changes);
+            pcout << line << std::endl;
+          }
+        if (!std::isfinite(residual_norm))
+          throw SolverFailure(exit_status::linear_solver,
+                              "the solution is not a number on cycle " +
+                                std::to_string(cycle) +
+                                " (is the body held against rigid motion?)");
+        if (changes == 0 && residual_norm < parameters.tolerance)
+          return;
+        // With the active set unchanged, the next step solves the same linear
+        // system again. A residual that did not fall since the last step
+        // is the round-off floor of a fine mesh if it is near the tolerance,
+        // and a failure if it is not.
+        if (changes == 0 && previous_changes == 0 &&
+            residual_norm > 0.5 * previous_residual)
+          {
+            if (residual_norm < 100. * parameters.tolerance)
+              return;
+            throw SolverFailure(
+              exit_status::contact_stalled,
+              "contact solver (" + strategy.name() + ") stalled on cycle " +
+                std::to_string(cycle) + " at residual " +
+                number(residual_norm) + " with an unchanged active set (" +
+                strategy.stall_hint() +
+                "is the body held against rigid motion? is Linear "
+                "solver/Tolerance too loose?)");
+          }
+        previous_residual = residual_norm;
+        previous_changes  = changes;
+        const bool returned =
+          changes > 0 && std::find(visited.begin(), visited.end(), signature) !=
+                           visited.end();
+        if (returned && parameters.remedies)
+          {
+            const std::string remedy = strategy.break_cycle();
+            if (!remedy.empty())
+              {
+                pcout << "   remedy: the active set returned to an earlier "
+                         "one on iteration "
+                      << iteration << "; cycle broken by " << remedy
+                      << std::endl;
+                update_active_set();
+                visited = {surface.active_set_signature()};
+                continue;
+              }
+          }
+        if (returned)
+          throw SolverFailure(exit_status::active_set_cycling,
+                              "contact solver (" + strategy.name() +
+                                (strategy.cycle_broken() ?
+                                   ", cycle breaking applied" :
+                                   "") +
+                                ") is cycling on cycle " +
+                                std::to_string(cycle) + ": iteration " +
+                                std::to_string(iteration) +
+                                " returned to an earlier active set of " +
+                                std::to_string(signature.first) + " nodes");
+        visited.push_back(signature);
+      }
+    throw SolverFailure(exit_status::contact_no_converge,
+                        "contact solver (" + strategy.name() +
+                          ") did not converge in " +
+                          std::to_string(parameters.max_iterations) +
+                          " iterations on cycle " + std::to_string(cycle) +
+                          " (Contact/Maximum iterations)");
+  }
+
+  template <int dim>
+  unsigned int
+  NewtonDriver<dim>::iterations() const
+  {
+    return newton_iterations;
+  }
+
+  template <int dim>
+  const ContactSurface<dim> &
+  NewtonDriver<dim>::contact_surface() const
+  {
+    return surface;
+  }
+
+  template <int dim>
+  const typename NewtonDriver<dim>::VectorType &
+  NewtonDriver<dim>::pressure() const
+  {
+    return contact_pressure;
+  }
+
+  template <int dim>
+  const typename NewtonDriver<dim>::VectorType &
+  NewtonDriver<dim>::residual() const
+  {
+    return contact_residual;
+  }
+
+  template <int dim>
+  double
+  NewtonDriver<dim>::minimal_cell_diameter() const
+  {
+    return discretisation.minimal_cell_diameter();
+  }
+
+  template <int dim>
+  std::pair<unsigned int, std::size_t>
+  NewtonDriver<dim>::active_set_signature() const
+  {
+    return surface.active_set_signature();
+  }
+
+  template <int dim>
+  bool
+  NewtonDriver<dim>::verbose_output() const
+  {
+    return verbose;
+  }
+
+  template <int dim>
+  MPI_Comm
+  NewtonDriver<dim>::mpi_communicator() const
+  {
+    return discretisation.mpi_communicator();
+  }
+
+  template class NewtonDriver<2>;
+  template class NewtonDriver<3>;
+} // namespace signorini

@@ -1,0 +1,317 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <signorini/discretisation/discretisation.h>
+#include <signorini/input/input_error.h>
+#include <signorini/mesh_adaptation/mesh_adaptation.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  Discretisation<dim>::Discretisation(
+    const Geometry<dim>           &geometry,
+    const Refinement              &refinement,
+    const BoundaryConditions<dim> &boundary_conditions,
+    const MPI_Comm                 mpi_communicator)
+    : geometry(geometry)
+    , refinement(refinement)
+    , boundary_conditions(boundary_conditions)
+    , communicator(mpi_communicator)
+  {
+  }
+
+  // Defined here, where MeshAdaptation is a complete type.
+  template <int dim>
+  Discretisation<dim>::~Discretisation()
+  {
+    dofs.clear();
+  }
+
+  template <int dim>
+  void
+  Discretisation<dim>::make_grid(const BoundaryIdUse &boundary_ids)
+  {
+    Triangulation<dim> coarse_mesh;
+    geometry.create_coarse_mesh(coarse_mesh, communicator);
+    if (coarse_mesh.get_reference_cells().size() > 1)
+      throw InputError("Geometry/Mesh file",
+                       "the mesh mixes cell types; it must hold only "
+                       "quadrilaterals/hexahedra or only triangles/tetrahedra");
+    simplex_cells = !coarse_mesh.all_reference_cells_are_hyper_cube();
+    const auto mesh_ids = coarse_mesh.get_boundary_ids();
+    for (const auto &[entry, ids] : boundary_ids)
+      for (const auto id : ids)
+        if (std::find(mesh_ids.begin(), mesh_ids.end(), id) == mesh_ids.end())
+          {
+            std::string known;
+            for (const auto mesh_id : mesh_ids)
+              known += (known.empty() ? "" : ", ") + std::to_string(mesh_id);
+            throw InputError(entry,
+                             "boundary id " + std::to_string(id) +
+                               " is not on the mesh, whose boundary ids are " +
+                               known);
+          }
+    // The same on every process: the coarse mesh is complete on each.
+    const auto corners =
+      GridTools::compute_bounding_box(coarse_mesh).get_boundary_points();
+    diagonal = corners.first.distance(corners.second);
+
+    mesh_adaptation = create_mesh_adaptation(geometry,
+                                             refinement,
+                                             simplex_cells,
+                                             communicator);
+    mesh            = mesh_adaptation->create_mesh(coarse_mesh);
+
+    const ReferenceCell cell_type = mesh->get_reference_cells()[0];
+    if (simplex_cells)
+      element = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
+    else
+      element = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
+    linear_mapping = &cell_type.template get_default_linear_mapping<dim>();
+    cell_rule      = cell_type.template get_gauss_type_quadrature<dim>(2);
+    face_rule      = cell_type.face_reference_cell(0)
+                  .template get_gauss_type_quadrature<dim - 1>(2);
+    setup_dofs();
+  }
+
+  template <int dim>
+  void
+  Discretisation<dim>::setup_dofs()
+  {
+    dofs.reinit(*mesh);
+    dofs.distribute_dofs(*element);
+    owned_dofs = dofs.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
+
+    hanging_nodes.clear();
+    hanging_nodes.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, hanging_nodes);
+    hanging_nodes.close();
+
+    fixed_constraints.clear();
+    fixed_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, fixed_constraints);
+    for (const auto &[id, mask] : boundary_conditions.dirichlet)
+      VectorTools::interpolate_boundary_values(
+        *linear_mapping,
+        dofs,
+        id,
+        *boundary_conditions.prescribed_displacement,
+        fixed_constraints,
+        mask);
+    fixed_constraints.close();
+
+    supported_dofs.clear();
+    supported_dofs.set_size(dofs.n_dofs());
+    for (const auto &[id, mask] : boundary_conditions.dirichlet)
+      supported_dofs.add_indices(
+        DoFTools::extract_boundary_dofs(dofs, mask, {id}));
+  }
+
+  template <int dim>
+  std::vector<typename Discretisation<dim>::VectorType>
+  Discretisation<dim>::refine(const Vector<float>                   &indicators,
+                              const std::vector<const VectorType *> &vectors)
+  {
+    auto carried = mesh_adaptation->adapt(
+      mesh, dofs, indicators, [this]() { setup_dofs(); }, vectors);
+    if (!carried.empty())
+      fixed_constraints.distribute(carried[0]);
+    return carried;
+  }
+
+  template <int dim>
+  bool
+  Discretisation<dim>::saves_mesh() const
+  {
+    return dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+             mesh.get()) != nullptr;
+  }
+
+  template <int dim>
+  void
+  Discretisation<dim>::save(const std::string                     &file,
+                            const std::vector<const VectorType *> &vectors,
+                            const Vector<float> &cell_data) const
+  {
+    auto &distributed =
+      dynamic_cast<parallel::distributed::Triangulation<dim> &>(*mesh);
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dofs);
+    transfer.prepare_for_serialization(vectors);
+    // The cell values, registered after the vectors; load() unpacks them in
+    // that order.
+    distributed.register_data_attach(
+      [&cell_data](const auto &cell, const auto) {
+        const float       value = cell_data(cell->active_cell_index());
+        std::vector<char> data(sizeof(value));
+        std::memcpy(data.data(), &value, sizeof(value));
+        return data;
+      },
+      false);
+    distributed.save(file);
+  }
+
+  template <int dim>
+  void
+  Discretisation<dim>::load(const std::string               &file,
+                            const std::vector<VectorType *> &vectors,
+                            Vector<float>                   &cell_data)
+  {
+    // The saved mesh is loaded into its coarse mesh.
+    Triangulation<dim> coarse_mesh;
+    geometry.create_coarse_mesh(coarse_mesh, communicator);
+    auto loaded = std::make_unique<parallel::distributed::Triangulation<dim>>(
+      communicator, mesh->get_mesh_smoothing());
+    loaded->copy_triangulation(coarse_mesh);
+    loaded->load(file);
+    dofs.reinit(*loaded);
+    mesh = std::move(loaded);
+    setup_dofs();
+
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dofs);
+    for (auto *vector : vectors)
+      vector->reinit(owned_dofs, communicator);
+    auto to_fill = vectors;
+    transfer.deserialize(to_fill);
+
+    auto &distributed =
+      dynamic_cast<parallel::distributed::Triangulation<dim> &>(*mesh);
+    cell_data.reinit(mesh->n_active_cells());
+    const unsigned int handle = distributed.register_data_attach(
+      [](const auto &, const auto) { return std::vector<char>(); }, false);
+    distributed.notify_ready_to_unpack(
+      handle, [&cell_data](const auto &cell, const auto, const auto &data) {
+        float value;
+        std::memcpy(&value, &*data.begin(), sizeof(value));
+        cell_data(cell->active_cell_index()) = value;
+      });
+  }
+
+  template <int dim>
+  void
+  Discretisation<dim>::refine_globally(const unsigned int times)
+  {
+    mesh->refine_global(times);
+    setup_dofs();
+  }
+
+  template <int dim>
+  double
+  Discretisation<dim>::minimal_cell_diameter() const
+  {
+    return GridTools::minimal_cell_diameter(*mesh);
+  }
+
+  template <int dim>
+  double
+  Discretisation<dim>::body_size() const
+  {
+    return diagonal;
+  }
+
+  template <int dim>
+  bool
+  Discretisation<dim>::simplex() const
+  {
+    return simplex_cells;
+  }
+
+  template <int dim>
+  const Triangulation<dim> &
+  Discretisation<dim>::triangulation() const
+  {
+    return *mesh;
+  }
+
+  template <int dim>
+  const DoFHandler<dim> &
+  Discretisation<dim>::dof_handler() const
+  {
+    return dofs;
+  }
+
+  template <int dim>
+  const FiniteElement<dim> &
+  Discretisation<dim>::fe() const
+  {
+    return *element;
+  }
+
+  template <int dim>
+  const Mapping<dim> &
+  Discretisation<dim>::mapping() const
+  {
+    return *linear_mapping;
+  }
+
+  template <int dim>
+  const Quadrature<dim> &
+  Discretisation<dim>::quadrature() const
+  {
+    return cell_rule;
+  }
+
+  template <int dim>
+  const Quadrature<dim - 1> &
+  Discretisation<dim>::face_quadrature() const
+  {
+    return face_rule;
+  }
+
+  template <int dim>
+  const IndexSet &
+  Discretisation<dim>::locally_owned_dofs() const
+  {
+    return owned_dofs;
+  }
+
+  template <int dim>
+  const IndexSet &
+  Discretisation<dim>::locally_relevant_dofs() const
+  {
+    return relevant_dofs;
+  }
+
+  template <int dim>
+  const AffineConstraints<double> &
+  Discretisation<dim>::hanging_node_constraints() const
+  {
+    return hanging_nodes;
+  }
+
+  template <int dim>
+  const AffineConstraints<double> &
+  Discretisation<dim>::constraints() const
+  {
+    return fixed_constraints;
+  }
+
+  template <int dim>
+  const IndexSet &
+  Discretisation<dim>::support_dofs() const
+  {
+    return supported_dofs;
+  }
+
+  template <int dim>
+  MPI_Comm
+  Discretisation<dim>::mpi_communicator() const
+  {
+    return communicator;
+  }
+
+  template class Discretisation<2>;
+  template class Discretisation<3>;
+} // namespace signorini

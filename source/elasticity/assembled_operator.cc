@@ -1,0 +1,261 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <signorini/base/memory.h>
+#include <signorini/elasticity/assembled_operator.h>
+
+#include <cmath>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  AssembledOperator<dim>::AssembledOperator(
+    const Discretisation<dim>    &discretisation,
+    const Material               &material,
+    Loads<dim>                   &loads,
+    const LinearSolverParameters &parameters,
+    const bool                    remedies,
+    ConditionalOStream           &pcout,
+    TimerOutput                  &timer)
+    : discretisation(discretisation)
+    , loads(loads)
+    , parameters(parameters)
+    , timer(timer)
+    , cell_stiffness(material)
+    , material(material)
+    , linear_system_solver(parameters, remedies, pcout, timer)
+  {
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::reinit()
+  {
+    const auto    &owned_dofs = discretisation.locally_owned_dofs();
+    const MPI_Comm comm       = discretisation.mpi_communicator();
+    TrilinosWrappers::SparsityPattern sparsity(
+      owned_dofs, owned_dofs, discretisation.locally_relevant_dofs(), comm);
+    DoFTools::make_sparsity_pattern(discretisation.dof_handler(),
+                                    sparsity,
+                                    discretisation.constraints(),
+                                    false,
+                                    Utilities::MPI::this_mpi_process(comm));
+    sparsity.compress();
+    // The pattern's construction left much of the heap free.
+    release_free_memory();
+    // The solver's factorisation refers to the old matrix: drop it first.
+    linear_system_solver.reset();
+    system_matrix.reinit(sparsity);
+    cell_stiffness.clear();
+    matrix_assembled = false;
+    sparsity.clear();
+
+    system_rhs.reinit(owned_dofs, comm);
+    base_rhs.reinit(owned_dofs, comm);
+    load_vector.reinit(owned_dofs, comm);
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::assemble_load()
+  {
+    TimerOutput::Scope t(timer, "Assembly: load");
+    loads.assemble(load_vector);
+  }
+
+  template <int dim>
+  const typename AssembledOperator<dim>::VectorType &
+  AssembledOperator<dim>::load() const
+  {
+    return load_vector;
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::residual(const VectorType &u, VectorType &residual)
+  {
+    TimerOutput::Scope t(timer, "Assembly: residual");
+    residual = 0;
+    const auto        &fe = discretisation.fe();
+    FEValues<dim>      fe_values(discretisation.mapping(),
+                            fe,
+                            discretisation.quadrature(),
+                            update_gradients | update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    Vector<double>     cell_residual(n), cell_solution(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+
+    for (const auto &cell :
+         discretisation.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          // The internal force K_cell u_cell; from the stresses where the
+          // cell's matrix is not cached (curved meshes), which costs an
+          // eighth of computing the matrix in 3D.
+          if (const auto *matrix = cell_stiffness.cached(cell))
+            {
+              cell->get_dof_values(u, cell_solution);
+              matrix->vmult(cell_residual, cell_solution);
+            }
+          else
+            {
+              fe_values.reinit(cell);
+              cell_internal_force(material, fe_values, u, cell_residual);
+            }
+          cell->get_dof_indices(dof_indices);
+          discretisation.constraints().distribute_local_to_global(
+            cell_residual, dof_indices, residual);
+        }
+    residual.compress(VectorOperation::add);
+    residual -= load_vector;
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::assemble_newton_system(
+    const ContactLinearisation<dim> &linearisation)
+  {
+    TimerOutput::Scope t(timer, "Assembly: Newton system");
+    const auto        &key = linearisation.key;
+    if (!matrix_assembled || key != assembled_for)
+      {
+        linear_system_solver.matrix_changed(matrix_assembled &&
+                                            linearisation.local_changes &&
+                                            key.second == assembled_for.second);
+        // Held nodes sit on the obstacle: n.u = -gap, solved for the
+        // component along which n is largest.
+        constraints.clear();
+        constraints.reinit(discretisation.locally_relevant_dofs());
+        for (const auto *node : linearisation.held)
+          {
+            unsigned int along = 0;
+            while (node->dofs[along] != node->scalar_dof)
+              ++along;
+            const double n = node->normal[along];
+            constraints.add_line(node->scalar_dof);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (d != along && node->normal[d] != 0.)
+                constraints.add_entry(node->scalar_dof,
+                                      node->dofs[d],
+                                      -node->normal[d] / n);
+            constraints.set_inhomogeneity(node->scalar_dof, -node->gap / n);
+          }
+        constraints.merge(discretisation.constraints(),
+                          AffineConstraints<double>::left_object_wins);
+        constraints.close();
+        assemble_matrix(linearisation);
+        base_rhs         = system_rhs;
+        assembled_for    = key;
+        matrix_assembled = true;
+      }
+    else
+      system_rhs = base_rhs;
+
+    if (linearisation.extra_forces)
+      {
+        for (const auto &spring : linearisation.springs)
+          for (unsigned int d = 0; d < dim; ++d)
+            if (spring.node->normal[d] != 0.)
+              system_rhs(spring.node->dofs[d]) +=
+                spring.extra_force * spring.node->normal[d];
+        system_rhs.compress(VectorOperation::add);
+      }
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::assemble_matrix(
+    const ContactLinearisation<dim> &linearisation)
+  {
+    system_matrix = 0;
+    system_rhs    = 0;
+    const auto        &fe = discretisation.fe();
+    FEValues<dim>      fe_values(discretisation.mapping(),
+                            fe,
+                            discretisation.quadrature(),
+                            update_gradients | update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    // The right-hand side gets only the lifting of inhomogeneous
+    // constraints here; the load vector is added below.
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+
+    for (const auto &cell :
+         discretisation.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &cell_matrix = cell_stiffness.matrix(cell, fe_values);
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
+        }
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    system_rhs += load_vector;
+
+    if (linearisation.penalised)
+      {
+        for (const auto &spring : linearisation.springs)
+          {
+            const auto &node = *spring.node;
+            for (unsigned int a = 0; a < dim; ++a)
+              if (node.normal[a] != 0.)
+                {
+                  for (unsigned int b = 0; b < dim; ++b)
+                    if (node.normal[b] != 0.)
+                      system_matrix.add(node.dofs[a],
+                                        node.dofs[b],
+                                        spring.stiffness * node.normal[a] *
+                                          node.normal[b]);
+                  system_rhs(node.dofs[a]) -= spring.rest_force * node.normal[a];
+                }
+          }
+        system_matrix.compress(VectorOperation::add);
+        system_rhs.compress(VectorOperation::add);
+      }
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::solve(const ContactLinearisation<dim> &linearisation,
+                                VectorType                      &u,
+                                const bool                       final_step)
+  {
+    assemble_newton_system(linearisation);
+    VectorType distributed(discretisation.locally_owned_dofs(),
+                           discretisation.mpi_communicator());
+    distributed = u; // a warm start for the iterative solver
+    constraints.set_zero(distributed);
+    linear_system_solver.solve(system_matrix,
+                               distributed,
+                               system_rhs,
+                               discretisation.fe().n_components(),
+                               final_step ? parameters.tolerance :
+                                            parameters.newton_tolerance);
+    constraints.distribute(distributed);
+    u = distributed;
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::invalidate()
+  {
+    matrix_assembled = false;
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::release()
+  {
+    linear_system_solver.reset();
+    system_matrix.clear();
+    matrix_assembled = false;
+    release_free_memory();
+  }
+
+  template class AssembledOperator<2>;
+  template class AssembledOperator<3>;
+} // namespace signorini
