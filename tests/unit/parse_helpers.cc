@@ -1,0 +1,142 @@
+// The parse:: helpers of parameter-file lists: the values of valid texts and
+// the entry and message of the InputError of invalid ones.
+
+#include <signorini/input/input_error.h>
+
+#include <functional>
+#include <iostream>
+#include <string>
+
+using namespace signorini;
+
+namespace
+{
+  /** Runs @p parse on @p text and prints its result or its error. */
+  void
+  check(const std::string                             &text,
+        const std::function<std::string(std::string)> &parse)
+  {
+    std::cout << "  \"" << text << "\" -> ";
+    try
+      {
+        std::cout << parse(text) << '\n';
+      }
+    catch (const InputError &error)
+      {
+        std::cout << "InputError [" << error.entry << "]: " << error.what()
+                  << '\n';
+      }
+  }
+
+  template <int dim>
+  std::string
+  to_string(const dealii::Point<dim> &p)
+  {
+    std::string s = "(";
+    for (unsigned int d = 0; d < dim; ++d)
+      s += (d ? ", " : "") + std::to_string(p[d]);
+    return s + ")";
+  }
+
+  template <typename Container>
+  std::string
+  join(const Container &items)
+  {
+    std::string s     = "{";
+    bool        first = true;
+    for (const auto &item : items)
+      {
+        s += (first ? "" : "|") + std::string(item);
+        first = false;
+      }
+    return s + "}";
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << "split(',') (items between |):\n";
+  for (const std::string text :
+       {"", " ", "a", "a,b", " a , b ", "a,,b", ",a,", "\ta\t,  b c ,"})
+    check(text,
+          [](const std::string &t) { return join(parse::split(t, ',')); });
+
+  std::cout << "point<2>:\n";
+  for (const std::string text : {"1, 2",
+                                 " -1.5e-3 ,4 ",
+                                 "1e3,0",
+                                 "1",
+                                 "1, 2, 3",
+                                 "",
+                                 "1, x",
+                                 "1, 2mm",
+                                 "1,, 2",
+                                 "nan, 1",
+                                 "1e999, 0"})
+    check(text, [](const std::string &t) {
+      return to_string(parse::point<2>(t, "Geometry/Center"));
+    });
+  std::cout << "point<3>:\n";
+  for (const std::string text : {"0, 0.25, -8", "0, 0.25"})
+    check(text, [](const std::string &t) {
+      return to_string(parse::point<3>(t, "Geometry/Center"));
+    });
+
+  std::cout << "point_list<2>:\n";
+  for (const std::string text :
+       {"", "10, 0; 5, 1", "10, 0; 5, 1;", "  ;  ", "10, 0; 5", "1, 2, 3"})
+    check(text, [](const std::string &t) {
+      std::string s;
+      for (const auto &p : parse::point_list<2>(t, "Output/Probes"))
+        s += to_string(p) + " ";
+      return "[ " + s + "]";
+    });
+  std::cout << "point_list<3>:\n";
+  check("1, 2, 3; 4, 5, 6", [](const std::string &t) {
+    std::string s;
+    for (const auto &p : parse::point_list<3>(t, "Output/Probes"))
+      s += to_string(p) + " ";
+    return "[ " + s + "]";
+  });
+
+  std::cout << "boundary_ids:\n";
+  for (const std::string text :
+       {"", "0", "0, 2", "2, 0, 2", "255", "256", "-1", "1.5", "one"})
+    check(text, [](const std::string &t) {
+      std::string s;
+      for (const auto id : parse::boundary_ids(t, "Boundary/Fixed"))
+        s += std::to_string(id) + " ";
+      return "{ " + s + "}";
+    });
+
+  std::cout << "unsigned_list, 2 values:\n";
+  for (const std::string text :
+       {"20, 2", " 1 ,1 ", "20", "20, 2, 1", "0, 2", "-3, 2", "2.5, 2", "a, 2"})
+    check(text, [](const std::string &t) {
+      std::string s;
+      for (const auto n : parse::unsigned_list(t, 2, "Geometry/Repetitions"))
+        s += std::to_string(n) + " ";
+      return "[ " + s + "]";
+    });
+
+  for (const unsigned int dim : {2u, 3u})
+    {
+      std::cout << "components, dim " << dim << ":\n";
+      for (const std::string text :
+           {"x", "y", "xy", "y x", "x, y", "all", "z", "xyz", "", "All", "u"})
+        check(text, [dim](const std::string &t) {
+          // "x-z" for x and z: digits would be compared as numbers.
+          const auto  mask = parse::components(t, dim, "Boundary/Components");
+          std::string s;
+          for (unsigned int d = 0; d < mask.size(); ++d)
+            s += mask[d] ? static_cast<char>('x' + d) : '-';
+          return s;
+        });
+    }
+
+  std::cout << "InputError::at:\n";
+  const InputError error = InputError::at("scene.prm:12", "unknown entry");
+  std::cout << "  entry [" << error.entry << "], location [" << error.location
+            << "], what: " << error.what() << '\n';
+}
