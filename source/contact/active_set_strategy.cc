@@ -8,9 +8,8 @@ namespace signorini
   using namespace dealii;
 
   template <int dim>
-  ActiveSetStrategy<dim>::ActiveSetStrategy(
-    const ContactParameters &parameters,
-    const double             young_modulus)
+  ActiveSetStrategy<dim>::ActiveSetStrategy(const ContactParameters &parameters,
+                                            const double young_modulus)
     : parameters(parameters)
     , young_modulus(young_modulus)
   {
@@ -30,12 +29,11 @@ namespace signorini
   {
     // c ~ E / h: the stiffness with which a node resists a local
     // penetration on this mesh.
-    complementarity_constant =
-      parameters.complementarity_constant > 0 ?
-        parameters.complementarity_constant :
-        young_modulus / newton.minimal_cell_diameter();
-    touching_tolerance = newton.contact_surface().touching_tolerance();
-    sign_rule          = false;
+    complementarity_constant = parameters.complementarity_constant > 0 ?
+                                 parameters.complementarity_constant :
+                                 young_modulus / newton.minimal_cell_diameter();
+    touching_tolerance       = newton.contact_surface().touching_tolerance();
+    sign_rule                = false;
     newton.initialize_active_set();
     newton.iterate(cycle);
   }
@@ -59,7 +57,7 @@ namespace signorini
   template <int dim>
   void
   ActiveSetStrategy<dim>::linearise(
-    const ContactSurface<dim>   &surface,
+    const ContactSurface<dim> &surface,
     ContactLinearisation<dim> &linearisation) const
   {
     for (const auto &node : surface.nodes())
@@ -77,8 +75,7 @@ namespace signorini
                                                 const double pressure,
                                                 const double gap) const
   {
-    return node.mass *
-           std::max(0., pressure - complementarity_constant * gap);
+    return node.mass * std::max(0., pressure - complementarity_constant * gap);
   }
 
   template <int dim>

@@ -36,7 +36,7 @@ namespace signorini
   AugmentedLagrangianStrategy<dim>::solve(NewtonDriver<dim> &newton,
                                           const unsigned int cycle)
   {
-    epsilon = penalty_compliance(parameters,
+    epsilon            = penalty_compliance(parameters,
                                  newton.minimal_cell_diameter(),
                                  young_modulus);
     touching_tolerance = newton.contact_surface().touching_tolerance();
@@ -47,8 +47,9 @@ namespace signorini
     multipliers.assign(nodes.size(), 0.);
     for (unsigned int i = 0; i < nodes.size(); ++i)
       if (nodes[i].owned)
-        multipliers[i] = std::max(
-          0., static_cast<double>(newton.pressure()(nodes[i].scalar_dof)));
+        multipliers[i] =
+          std::max(0.,
+                   static_cast<double>(newton.pressure()(nodes[i].scalar_dof)));
     newton.initialize_active_set();
     double previous_change = 0.;
     for (;;)
@@ -81,8 +82,9 @@ namespace signorini
             previous_change = 0.;
             pcout << "   remedy: the multipliers change by a factor of "
                   << number(rate) << " per update on update "
-                  << multiplier_updates << "; penalty stiffened to epsilon = "
-                  << number(epsilon) << std::endl;
+                  << multiplier_updates
+                  << "; penalty stiffened to epsilon = " << number(epsilon)
+                  << std::endl;
           }
       }
   }
@@ -126,7 +128,7 @@ namespace signorini
   template <int dim>
   void
   AugmentedLagrangianStrategy<dim>::linearise(
-    const ContactSurface<dim>   &surface,
+    const ContactSurface<dim> &surface,
     ContactLinearisation<dim> &linearisation) const
   {
     add_penalty_springs(surface, epsilon, multipliers, linearisation);

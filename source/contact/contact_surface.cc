@@ -29,8 +29,8 @@ namespace signorini
   void
   ContactSurface<dim>::setup(const Discretisation<dim> &discretisation)
   {
-    mpi_communicator = discretisation.mpi_communicator();
-    tolerance        = 1e-12 * discretisation.body_size();
+    mpi_communicator        = discretisation.mpi_communicator();
+    tolerance               = 1e-12 * discretisation.body_size();
     const auto &constraints = discretisation.constraints();
     const auto &owned_dofs  = discretisation.locally_owned_dofs();
 
@@ -45,8 +45,8 @@ namespace signorini
             for (const unsigned int v : face->vertex_indices())
               {
                 ContactNode<dim> node;
-                node.position = face->vertex(v);
-                node.gap      = obstacle.gap(node.position, node.normal);
+                node.position      = face->vertex(v);
+                node.gap           = obstacle.gap(node.position, node.normal);
                 unsigned int along = 0;
                 for (unsigned int d = 0; d < dim; ++d)
                   {
@@ -81,13 +81,13 @@ namespace signorini
 
     // Lumped contact-boundary mass: the integral of each shape function over
     // the contact boundary, condensed onto the free nodes.
-    const auto &fe = discretisation.fe();
-    VectorType  mass(owned_dofs, mpi_communicator);
-    FEFaceValues<dim>                    fe_face_values(discretisation.mapping(),
+    const auto       &fe = discretisation.fe();
+    VectorType        mass(owned_dofs, mpi_communicator);
+    FEFaceValues<dim> fe_face_values(discretisation.mapping(),
                                      fe,
                                      discretisation.face_quadrature(),
                                      update_values | update_JxW_values);
-    Vector<double>                       cell_mass(fe.n_dofs_per_cell());
+    Vector<double>    cell_mass(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())

@@ -144,9 +144,9 @@ namespace signorini
     for (unsigned int i = 0; i < nodes.size(); ++i)
       if (nodes[i].owned)
         {
-          const auto  &node   = nodes[i];
-          const double lambda = node.normal_displacement(contact_residual);
-          const double p      = node.mass > 0 ? lambda / node.mass : 0.;
+          const auto  &node     = nodes[i];
+          const double lambda   = node.normal_displacement(contact_residual);
+          const double p        = node.mass > 0 ? lambda / node.mass : 0.;
           const double expected = strategy.complementarity_force(
             i, node, lambda, p, surface.deformed_gap(node, solution));
           owned_pressure(node.scalar_dof) = p;
@@ -162,9 +162,10 @@ namespace signorini
     contact_pressure = owned_pressure;
 
     const double balance_norm = balance.l2_norm();
-    complementarity    = Utilities::MPI::sum(complementarity, comm);
-    contact_force      = Utilities::MPI::sum(contact_force, comm);
-    const double scale = elastic_operator.load().l2_norm() + std::sqrt(contact_force);
+    complementarity           = Utilities::MPI::sum(complementarity, comm);
+    contact_force             = Utilities::MPI::sum(contact_force, comm);
+    const double scale =
+      elastic_operator.load().l2_norm() + std::sqrt(contact_force);
     return std::sqrt(balance_norm * balance_norm + complementarity) /
            (scale > 0 ? scale : 1.);
   }
@@ -261,8 +262,8 @@ namespace signorini
         previous_residual = residual_norm;
         previous_changes  = changes;
         const bool returned =
-          changes > 0 && std::find(visited.begin(), visited.end(), signature) !=
-                           visited.end();
+          changes > 0 &&
+          std::find(visited.begin(), visited.end(), signature) != visited.end();
         if (returned && parameters.remedies)
           {
             const std::string remedy = strategy.break_cycle();
@@ -278,16 +279,14 @@ namespace signorini
               }
           }
         if (returned)
-          throw SolverFailure(exit_status::active_set_cycling,
-                              "contact solver (" + strategy.name() +
-                                (strategy.cycle_broken() ?
-                                   ", cycle breaking applied" :
-                                   "") +
-                                ") is cycling on cycle " +
-                                std::to_string(cycle) + ": iteration " +
-                                std::to_string(iteration) +
-                                " returned to an earlier active set of " +
-                                std::to_string(signature.first) + " nodes");
+          throw SolverFailure(
+            exit_status::active_set_cycling,
+            "contact solver (" + strategy.name() +
+              (strategy.cycle_broken() ? ", cycle breaking applied" : "") +
+              ") is cycling on cycle " + std::to_string(cycle) +
+              ": iteration " + std::to_string(iteration) +
+              " returned to an earlier active set of " +
+              std::to_string(signature.first) + " nodes");
         visited.push_back(signature);
       }
     throw SolverFailure(exit_status::contact_no_converge,

@@ -30,7 +30,7 @@ namespace signorini
   template <int dim>
   void
   NoContactStrategy<dim>::linearise(
-    const ContactSurface<dim>   &surface,
+    const ContactSurface<dim> &surface,
     ContactLinearisation<dim> &linearisation) const
   {
     linearisation.key = {surface.active_set_signature(), 0.};

@@ -22,9 +22,9 @@ namespace signorini
 
   template <int dim>
   void
-  add_penalty_springs(const ContactSurface<dim>   &surface,
-                      const double                 epsilon,
-                      const std::vector<double>   &multipliers,
+  add_penalty_springs(const ContactSurface<dim> &surface,
+                      const double               epsilon,
+                      const std::vector<double> &multipliers,
                       ContactLinearisation<dim> &linearisation)
   {
     // The obstacle pushes back with p = penetration / epsilon on the
@@ -35,7 +35,7 @@ namespace signorini
     for (unsigned int i = 0; i < nodes.size(); ++i)
       if (nodes[i].owned && nodes[i].active)
         {
-          const auto &node = nodes[i];
+          const auto                                &node = nodes[i];
           typename ContactLinearisation<dim>::Spring spring;
           spring.node       = &node;
           spring.stiffness  = node.mass / epsilon;
@@ -46,13 +46,13 @@ namespace signorini
         }
     linearisation.penalised    = true;
     linearisation.extra_forces = !multipliers.empty();
-    linearisation.key = {surface.active_set_signature(), epsilon};
+    linearisation.key          = {surface.active_set_signature(), epsilon};
   }
 
   template <int dim>
   PenaltyStrategy<dim>::PenaltyStrategy(const ContactParameters &parameters,
-                                        const double       young_modulus,
-                                        ConditionalOStream &pcout)
+                                        const double             young_modulus,
+                                        ConditionalOStream      &pcout)
     : parameters(parameters)
     , young_modulus(young_modulus)
     , pcout(pcout)
@@ -71,7 +71,7 @@ namespace signorini
   PenaltyStrategy<dim>::solve(NewtonDriver<dim> &newton,
                               const unsigned int cycle)
   {
-    epsilon = penalty_compliance(parameters,
+    epsilon            = penalty_compliance(parameters,
                                  newton.minimal_cell_diameter(),
                                  young_modulus);
     touching_tolerance = newton.contact_surface().touching_tolerance();
@@ -139,7 +139,7 @@ namespace signorini
   template <int dim>
   void
   PenaltyStrategy<dim>::linearise(
-    const ContactSurface<dim>   &surface,
+    const ContactSurface<dim> &surface,
     ContactLinearisation<dim> &linearisation) const
   {
     add_penalty_springs(surface, epsilon, {}, linearisation);

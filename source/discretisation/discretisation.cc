@@ -49,7 +49,7 @@ namespace signorini
       throw InputError("Geometry/Mesh file",
                        "the mesh mixes cell types; it must hold only "
                        "quadrilaterals/hexahedra or only triangles/tetrahedra");
-    simplex_cells = !coarse_mesh.all_reference_cells_are_hyper_cube();
+    simplex_cells       = !coarse_mesh.all_reference_cells_are_hyper_cube();
     const auto mesh_ids = coarse_mesh.get_boundary_ids();
     for (const auto &[entry, ids] : boundary_ids)
       for (const auto id : ids)
@@ -68,11 +68,9 @@ namespace signorini
       GridTools::compute_bounding_box(coarse_mesh).get_boundary_points();
     diagonal = corners.first.distance(corners.second);
 
-    mesh_adaptation = create_mesh_adaptation(geometry,
-                                             refinement,
-                                             simplex_cells,
-                                             communicator);
-    mesh            = mesh_adaptation->create_mesh(coarse_mesh);
+    mesh_adaptation =
+      create_mesh_adaptation(geometry, refinement, simplex_cells, communicator);
+    mesh = mesh_adaptation->create_mesh(coarse_mesh);
 
     const ReferenceCell cell_type = mesh->get_reference_cells()[0];
     if (simplex_cells)

@@ -78,14 +78,14 @@ namespace signorini
   AssembledOperator<dim>::residual(const VectorType &u, VectorType &residual)
   {
     TimerOutput::Scope t(timer, "Assembly: residual");
-    residual = 0;
-    const auto        &fe = discretisation.fe();
-    FEValues<dim>      fe_values(discretisation.mapping(),
+    residual                                = 0;
+    const auto                          &fe = discretisation.fe();
+    FEValues<dim>                        fe_values(discretisation.mapping(),
                             fe,
                             discretisation.quadrature(),
                             update_gradients | update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
-    Vector<double>     cell_residual(n), cell_solution(n);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    Vector<double>                       cell_residual(n), cell_solution(n);
     std::vector<types::global_dof_index> dof_indices(n);
 
     for (const auto &cell :
@@ -106,8 +106,9 @@ namespace signorini
               cell_internal_force(material, fe_values, u, cell_residual);
             }
           cell->get_dof_indices(dof_indices);
-          discretisation.constraints().distribute_local_to_global(
-            cell_residual, dof_indices, residual);
+          discretisation.constraints().distribute_local_to_global(cell_residual,
+                                                                  dof_indices,
+                                                                  residual);
         }
     residual.compress(VectorOperation::add);
     residual -= load_vector;
@@ -170,8 +171,8 @@ namespace signorini
   AssembledOperator<dim>::assemble_matrix(
     const ContactLinearisation<dim> &linearisation)
   {
-    system_matrix = 0;
-    system_rhs    = 0;
+    system_matrix         = 0;
+    system_rhs            = 0;
     const auto        &fe = discretisation.fe();
     FEValues<dim>      fe_values(discretisation.mapping(),
                             fe,
@@ -210,7 +211,8 @@ namespace signorini
                                         node.dofs[b],
                                         spring.stiffness * node.normal[a] *
                                           node.normal[b]);
-                  system_rhs(node.dofs[a]) -= spring.rest_force * node.normal[a];
+                  system_rhs(node.dofs[a]) -=
+                    spring.rest_force * node.normal[a];
                 }
           }
         system_matrix.compress(VectorOperation::add);

@@ -55,17 +55,17 @@ namespace signorini
   void
   Loads<dim>::assemble(TrilinosWrappers::MPI::Vector &load)
   {
-    load = 0;
-    const auto        &fe = discretisation.fe();
-    FEValues<dim>      fe_values(discretisation.mapping(),
+    load                 = 0;
+    const auto       &fe = discretisation.fe();
+    FEValues<dim>     fe_values(discretisation.mapping(),
                             fe,
                             discretisation.quadrature(),
                             update_flags());
-    FEFaceValues<dim>  fe_face_values(discretisation.mapping(),
+    FEFaceValues<dim> fe_face_values(discretisation.mapping(),
                                      fe,
                                      discretisation.face_quadrature(),
                                      update_flags());
-    Vector<double>     cell_vector(fe.n_dofs_per_cell());
+    Vector<double>    cell_vector(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
 
     // A load by a force: the uniform traction of that resultant on the

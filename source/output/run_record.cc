@@ -74,7 +74,8 @@ namespace signorini
   }
 
   void
-  RunRecord::add_solution_file(const unsigned int cycle, const std::string &name)
+  RunRecord::add_solution_file(const unsigned int cycle,
+                               const std::string &name)
   {
     solution_files.emplace_back(cycle, name);
   }

@@ -18,20 +18,20 @@ namespace signorini
     // Supported dofs carry no constraint entries, hanging ones do. Hanging
     // nodes alone, since closing them with the supports would drop supported
     // masters.
-    const auto &hanging_nodes = discretisation.hanging_node_constraints();
-    const auto &support_dofs  = discretisation.support_dofs();
-    const auto &fe            = discretisation.fe();
-    FEValues<dim>      fe_values(discretisation.mapping(),
+    const auto       &hanging_nodes = discretisation.hanging_node_constraints();
+    const auto       &support_dofs  = discretisation.support_dofs();
+    const auto       &fe            = discretisation.fe();
+    FEValues<dim>     fe_values(discretisation.mapping(),
                             fe,
                             discretisation.quadrature(),
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>  fe_face_values(discretisation.mapping(),
+    FEFaceValues<dim> fe_face_values(discretisation.mapping(),
                                      fe,
                                      discretisation.face_quadrature(),
                                      Loads<dim>::update_flags());
-    const unsigned int n = fe.n_dofs_per_cell();
-    Vector<double>     cell_load(n), internal(n);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    Vector<double>                       cell_load(n), internal(n);
     std::vector<types::global_dof_index> dof_indices(n);
 
     Tensor<1, dim> applied, reaction;

@@ -23,7 +23,7 @@ namespace signorini
     const MPI_Comm   comm = discretisation.mpi_communicator();
     ContactZone<dim> zone;
     double           max_pressure = -std::numeric_limits<double>::max();
-    double x_min = std::numeric_limits<double>::max(), x_max = -x_min;
+    double           x_min = std::numeric_limits<double>::max(), x_max = -x_min;
     for (const auto &node : surface.nodes())
       if (node.owned)
         {
@@ -43,20 +43,20 @@ namespace signorini
 
     // The nodal pressures sit at one dof per node, the others hold zero:
     // summed over all components, the shape functions interpolate them.
-    const auto          &ids   = surface.contact_ids();
-    const Function<dim> *exact = reference.contact_pressure.get();
+    const auto               &ids   = surface.contact_ids();
+    const Function<dim>      *exact = reference.contact_pressure.get();
     const Quadrature<dim - 1> rule =
       discretisation.simplex() && dim == 3 ?
         Quadrature<dim - 1>(QGaussSimplex<dim - 1>(4)) :
         Quadrature<dim - 1>(QGauss<dim - 1>(6));
-    const auto       &fe          = discretisation.fe();
-    const auto       &constraints = discretisation.constraints();
-    FEFaceValues<dim> fe_face_values(discretisation.mapping(),
+    const auto        &fe          = discretisation.fe();
+    const auto        &constraints = discretisation.constraints();
+    FEFaceValues<dim>  fe_face_values(discretisation.mapping(),
                                      fe,
                                      rule,
                                      update_values | update_quadrature_points |
                                        update_JxW_values);
-    const unsigned int                   n = fe.n_dofs_per_cell();
+    const unsigned int n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dof_indices(n);
     std::vector<double>                  nodal(n);
     const auto nodal_pressure = [&](const types::global_dof_index i) {

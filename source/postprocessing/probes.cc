@@ -62,9 +62,9 @@ namespace signorini
                   const TrilinosWrappers::MPI::Vector &u,
                   const std::vector<Point<dim>>       &points)
   {
-    const MPI_Comm     comm    = discretisation.mpi_communicator();
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const MPI_Comm              comm = discretisation.mpi_communicator();
+    const unsigned int          rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int          n_ranks = Utilities::MPI::n_mpi_processes(comm);
     std::vector<Tensor<1, dim>> values;
     for (const auto &point : points)
       {
@@ -79,8 +79,8 @@ namespace signorini
             text << "the point (" << point << ") is not in the body";
             throw InputError("Output/Probe points", text.str());
           }
-        values.push_back(Utilities::MPI::sum(
-          rank == owner ? value : Tensor<1, dim>(), comm));
+        values.push_back(
+          Utilities::MPI::sum(rank == owner ? value : Tensor<1, dim>(), comm));
       }
     return values;
   }

@@ -32,7 +32,7 @@ namespace signorini
                 const double            pressure) const override;
 
     void
-    linearise(const ContactSurface<dim>   &surface,
+    linearise(const ContactSurface<dim> &surface,
               ContactLinearisation<dim> &linearisation) const override;
 
     double

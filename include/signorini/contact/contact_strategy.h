@@ -51,7 +51,7 @@ namespace signorini
 
     /** What the active nodes of @p surface add to the elastic operator. */
     virtual void
-    linearise(const ContactSurface<dim>   &surface,
+    linearise(const ContactSurface<dim> &surface,
               ContactLinearisation<dim> &linearisation) const = 0;
 
     /** The nodal contact force [N] that complementarity asks of the owned

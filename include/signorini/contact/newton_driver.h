@@ -32,14 +32,14 @@ namespace signorini
 
     /** @p solution and @p pressure are the ghosted displacement [mm] and
      * nodal contact pressure [MPa] (at each contact node's scalar dof). */
-    NewtonDriver(const Discretisation<dim> &discretisation,
-                 ElasticOperator<dim>      &elastic_operator,
-                 ContactSurface<dim>       &surface,
-                 ContactStrategy<dim>      &strategy,
-                 const ContactParameters   &parameters,
-                 const bool                 verbose,
-                 VectorType                &solution,
-                 VectorType                &pressure,
+    NewtonDriver(const Discretisation<dim>  &discretisation,
+                 ElasticOperator<dim>       &elastic_operator,
+                 ContactSurface<dim>        &surface,
+                 ContactStrategy<dim>       &strategy,
+                 const ContactParameters    &parameters,
+                 const bool                  verbose,
+                 VectorType                 &solution,
+                 VectorType                 &pressure,
                  dealii::ConditionalOStream &pcout,
                  dealii::TimerOutput        &timer);
 

@@ -20,9 +20,9 @@ namespace signorini
    * empty; indexed like the nodes). */
   template <int dim>
   void
-  add_penalty_springs(const ContactSurface<dim>   &surface,
-                      const double                 epsilon,
-                      const std::vector<double>   &multipliers,
+  add_penalty_springs(const ContactSurface<dim> &surface,
+                      const double               epsilon,
+                      const std::vector<double> &multipliers,
                       ContactLinearisation<dim> &linearisation);
 
   /**
@@ -54,7 +54,7 @@ namespace signorini
                 const double            pressure) const override;
 
     void
-    linearise(const ContactSurface<dim>   &surface,
+    linearise(const ContactSurface<dim> &surface,
               ContactLinearisation<dim> &linearisation) const override;
 
     double

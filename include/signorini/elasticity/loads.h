@@ -49,10 +49,10 @@ namespace signorini
     }
 
   private:
-    const BoundaryConditions<dim>            &boundary_conditions;
-    const Discretisation<dim>                &discretisation;
-    const dealii::Function<dim>              *traction = nullptr;
-    std::unique_ptr<dealii::Function<dim>>    uniform_traction;
+    const BoundaryConditions<dim>         &boundary_conditions;
+    const Discretisation<dim>             &discretisation;
+    const dealii::Function<dim>           *traction = nullptr;
+    std::unique_ptr<dealii::Function<dim>> uniform_traction;
   };
 } // namespace signorini
 

@@ -23,9 +23,7 @@ namespace signorini
    *
    * at least @p min_size. The new mesh has about sum_K (h / h_new)^d
    * cells; eta_target is found by bisection so that this is @p growth
-   * times the current number of cells. Sizes are rounded to 8 significant
-   * digits, so that round-off in the indicators (one process or several)
-   * does not change the mesh. A vertex takes the mean of its cells'
+   * times the current number of cells. A vertex takes the mean of its cells'
    * sizes; a point between vertices the inverse-distance weighted mean of
    * the d + 1 nearest vertices, which also covers points of a curved
    * boundary outside the old, polygonal mesh.

@@ -39,9 +39,9 @@ namespace signorini
    */
   template <int dim>
   ContactZone<dim>
-  evaluate_contact_zone(const Discretisation<dim>                   &discretisation,
-                        const ContactSurface<dim>                   &surface,
-                        const Obstacle<dim>                         &obstacle,
+  evaluate_contact_zone(const Discretisation<dim> &discretisation,
+                        const ContactSurface<dim> &surface,
+                        const Obstacle<dim>       &obstacle,
                         const dealii::TrilinosWrappers::MPI::Vector &pressure,
                         const Reference<dim>                        &reference);
 } // namespace signorini
