@@ -58,10 +58,9 @@ namespace signorini
 
   namespace
   {
-    /** The size of the blocks that an array is compressed in. VTK writes
-     * blocks of 32 kB, which make the files 4 to 7 % larger at zlib's
-     * fastest level; blocks of 256 kB are within 0.1 % of one block per
-     * array and still give the threads a few blocks each. */
+    /** The size of the blocks that an array is compressed in: large enough
+     * to compress about as well as one block per array, small enough to
+     * give each thread a few blocks (doc/architecture.md). */
     constexpr std::size_t block_size = 262144;
 
     /** An array of the file as bytes, and its compressed blocks. */

@@ -8,9 +8,8 @@ namespace signorini
    * malloc_trim). Large structures freed at the end of a phase (the sparsity
    * pattern's construction, a cycle's matrix and AMG, the output patches
    * built by worker threads in their own heaps) otherwise stay resident,
-   * and what the next phase allocates elsewhere adds to the peak: on the
-   * indentation scene at 493k dofs, trimming after each phase lowered the
-   * peak from 1.79 to 1.58 GB.
+   * and what the next phase allocates elsewhere adds to the peak
+   * (README, "what each lever bought").
    */
   void
   release_free_memory();
