@@ -127,7 +127,7 @@ namespace signorini
 
   template <int dim>
   double
-  NewtonDriver<dim>::compute_contact_forces()
+  NewtonDriver<dim>::evaluate_residual()
   {
     TimerOutput::Scope t(timer, "Active set: contact forces");
     elastic_operator.residual(solution, contact_residual);
@@ -172,10 +172,16 @@ namespace signorini
 
   template <int dim>
   void
+  NewtonDriver<dim>::assemble_newton_system()
+  {
+    linearisation = ContactLinearisation<dim>();
+    strategy.linearise(surface, linearisation);
+  }
+
+  template <int dim>
+  void
   NewtonDriver<dim>::solve(const bool final_step)
   {
-    ContactLinearisation<dim> linearisation;
-    strategy.linearise(surface, linearisation);
     try
       {
         elastic_operator.solve(linearisation, solution, final_step);
@@ -193,8 +199,9 @@ namespace signorini
   void
   NewtonDriver<dim>::solve_once()
   {
+    assemble_newton_system();
     solve(true);
-    compute_contact_forces();
+    evaluate_residual();
     newton_iterations = 1;
   }
 
@@ -213,9 +220,10 @@ namespace signorini
          ++iteration)
       {
         const bool contact_free = visited.back().first == 0;
+        assemble_newton_system();
         solve(settled);
         ++newton_iterations;
-        const double       residual_norm = compute_contact_forces();
+        const double       residual_norm = evaluate_residual();
         const unsigned int changes =
           contact_free ? activate_first_contact() : update_active_set();
         const auto signature = surface.active_set_signature();

@@ -25,6 +25,7 @@ namespace signorini
     MPI_Barrier(mpi_communicator);
     const auto start = std::chrono::steady_clock::now();
     elastic_operator->assemble_load();
+    newton.assemble_newton_system();
     newton.solve(true);
     MPI_Barrier(mpi_communicator);
     const double seconds =

@@ -48,8 +48,8 @@ namespace signorini
   } // namespace
 
   template <int dim>
-  unsigned int
-  ContactProblem<dim>::start_output(const bool resume, double &run_time)
+  std::optional<unsigned int>
+  ContactProblem<dim>::start_output(const bool resume)
   {
     const std::string &directory = parameters.output.directory;
     checkpoint =
@@ -68,10 +68,16 @@ namespace signorini
       output_series::remove_stale_files(directory, resumed);
     });
     write_obstacle_and_parameters();
-    if (!resumed)
-      return 0;
+    return resumed;
+  }
 
-    State state;
+  template <int dim>
+  void
+  ContactProblem<dim>::restore_checkpoint(const unsigned int cycle,
+                                          double            &run_time)
+  {
+    const std::string &directory = parameters.output.directory;
+    State              state;
     {
       std::istringstream              in(checkpoint->state());
       boost::archive::binary_iarchive archive(in);
@@ -87,14 +93,13 @@ namespace signorini
                          [&](std::ostream &out) { out << text; });
     });
 
-    const unsigned int cycle = *resumed;
     pcout << "Resuming after cycle " << cycle << " from "
           << checkpoint->state_file(cycle) << std::endl;
     if (cycle + 1 >= parameters.refinement.n_cycles)
       {
         pcout << "All " << parameters.refinement.n_cycles
               << " cycles were finished already" << std::endl;
-        return cycle + 1;
+        return;
       }
 
     TimerOutput::Scope t(timer, "Setup: resume");
@@ -127,7 +132,6 @@ namespace signorini
     pressure = owned_pressure;
     if (!discretisation.saves_mesh())
       estimate_error();
-    return cycle + 1;
   }
 
   template <int dim>

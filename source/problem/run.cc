@@ -62,7 +62,10 @@ namespace signorini
     }
     setup_system();
     run_time += now() - start;
-    const unsigned int first_cycle = start_output(resume, run_time);
+    const auto resumed = start_output(resume);
+    if (resumed)
+      restore_checkpoint(*resumed, run_time);
+    const unsigned int first_cycle = resumed ? *resumed + 1 : 0;
     for (unsigned int cycle = first_cycle;
          cycle < parameters.refinement.n_cycles;
          ++cycle)

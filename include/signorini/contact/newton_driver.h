@@ -68,7 +68,12 @@ namespace signorini
     void
     solve_once();
 
-    /** Solves the Newton system of the current active set. */
+    /** The strategy's linearisation of the current active set. */
+    void
+    assemble_newton_system();
+
+    /** Solves the Newton system of the last assemble_newton_system() with
+     * the elastic operator (which assembles or reuses its matrix). */
     void
     solve(const bool final_step);
 
@@ -104,11 +109,11 @@ namespace signorini
     active_set_signature() const;
 
   private:
-    /** Pressure and residual from the current displacement; returns the
-     * norm of the nonlinear residual (force balance and complementarity)
-     * relative to the load. */
+    /** The contact forces and pressure of the current displacement;
+     * returns the norm of the nonlinear residual (force balance and
+     * complementarity) relative to the load. */
     double
-    compute_contact_forces();
+    evaluate_residual();
 
     /** Applies the strategy's rule; returns the number of changes. */
     unsigned int
@@ -131,6 +136,7 @@ namespace signorini
     VectorType                  contact_residual;
     dealii::ConditionalOStream &pcout;
     dealii::TimerOutput        &timer;
+    ContactLinearisation<dim>   linearisation;
     unsigned int                newton_iterations = 0;
   };
 } // namespace signorini

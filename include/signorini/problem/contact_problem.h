@@ -20,6 +20,7 @@
 #include <signorini/output/run_record.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace signorini
@@ -82,11 +83,16 @@ namespace signorini
 
     // resume.cc
     /** Takes over the output directory (removing what an earlier run left
-     * that this run does not continue), writes the obstacle and the
-     * parameters, and on @p resume restores the newest checkpoint, adding
-     * its run time to @p run_time. Returns the first cycle to compute. */
-    unsigned int
-    start_output(const bool resume, double &run_time);
+     * that this run does not continue) and writes the obstacle and the
+     * parameters. Returns the cycle of the checkpoint to resume after, on
+     * @p resume, if there is one. */
+    std::optional<unsigned int>
+    start_output(const bool resume);
+    /** Restores the run record, the tables, the mesh and the state after
+     * cycle @p cycle from its checkpoint, adding its run time to
+     * @p run_time. */
+    void
+    restore_checkpoint(const unsigned int cycle, double &run_time);
     /** Writes the checkpoint of cycle @p cycle (Output/Checkpoint). */
     void
     save_checkpoint(const unsigned int cycle, const double run_time);
