@@ -3,8 +3,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/base/failures.h>
-#include <signorini/input/include_check.h>
 #include <signorini/input/input_error.h>
+#include <signorini/input/parameter_file.h>
 #include <signorini/input/parameters.h>
 #include <signorini/problem/contact_problem.h>
 #include <signorini/program.h>
@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <regex>
 #include <sstream>
 
 namespace signorini
@@ -35,55 +34,14 @@ namespace signorini
       "3 active set cycling, 4 linear solver failed, 5 other error,\n"
       "6 contact solver stalled, 7 augmented Lagrangian multipliers too slow.\n";
 
-    /**
-     * Reads @p file into @p prm. `include` lines name files relative to the
-     * folder of @p file. Errors become InputErrors that read "FILE:LINE: what
-     * is wrong".
-     */
-    void
-    parse_file(ParameterHandler &prm, const std::string &file)
-    {
-      const auto path = std::filesystem::absolute(file);
-      const auto cwd  = std::filesystem::current_path();
-      try
-        {
-          std::filesystem::current_path(path.parent_path());
-          prm.parse_input(path.string());
-          std::filesystem::current_path(cwd);
-        }
-      catch (const ExceptionBase &error)
-        {
-          std::filesystem::current_path(cwd);
-          std::string      message = one_line(error);
-          const std::regex located("^Line <([0-9]+)> of file <([^>]*)>: (.*)$");
-          std::smatch      match;
-          if (std::regex_match(message, match, located))
-            {
-              const std::string where =
-                match[2] == path.string() ? file : std::string(match[2]);
-              throw InputError::at(where + ":" + std::string(match[1]),
-                                   match[3]);
-            }
-          throw InputError::at(file, message);
-        }
-    }
-
     template <int dim>
     void
-    run_scene(ParameterHandler               &prm,
-              const std::string              &file,
-              const std::vector<std::string> &included_folders,
-              const bool                      resume)
+    run_scene(ParameterHandler    &prm,
+              const ParameterFile &input,
+              const bool           resume)
     {
-      // Relative file names in entries: from the parameter file's folder,
-      // else from the folders of the files it includes.
-      std::vector<std::string> folders{
-        std::filesystem::absolute(file).parent_path().string()};
-      folders.insert(folders.end(),
-                     included_folders.begin(),
-                     included_folders.end());
       Parameters<dim> parameters;
-      parameters.parse_parameters(prm, folders);
+      parameters.parse_parameters(prm, input.folders());
       // parameters.prm is to run again from anywhere: name the mesh file by
       // its absolute path.
       if (parameters.geometry.type == Geometry<dim>::Type::gmsh)
@@ -150,12 +108,12 @@ namespace signorini
       {
         if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
           throw InputError::at(file, "cannot open the parameter file");
-        const auto included = check_includes(file);
-        parse_file(prm, file);
+        const ParameterFile input(file);
+        input.parse(prm);
         if (prm.get_integer("Dimension") == 2)
-          run_scene<2>(prm, file, included, resume);
+          run_scene<2>(prm, input, resume);
         else
-          run_scene<3>(prm, file, included, resume);
+          run_scene<3>(prm, input, resume);
         return exit_status::success;
       }
     catch (const InputError &error)
