@@ -1,5 +1,3 @@
-#include <deal.II/base/mpi.h>
-
 #include <signorini/input/parameters.h>
 
 namespace signorini
@@ -36,8 +34,7 @@ namespace signorini
     boundary_conditions.parse_parameters(prm);
     obstacle.parse_parameters(prm);
     contact.parse_parameters(prm);
-    linear_solver.parse_parameters(
-      prm, dim, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    linear_solver.parse_parameters(prm);
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
