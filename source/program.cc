@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace signorini
 {
@@ -26,8 +25,10 @@ namespace signorini
       "       signorini --resume FILE.prm continue after the newest checkpoint\n"
       "                                    in the output directory (from cycle\n"
       "                                    0 if there is none)\n"
-      "       signorini --print-parameters print every parameter with its\n"
-      "                                    default and documentation\n"
+      "       signorini --print-parameters [2|3]\n"
+      "                                    print every parameter with its\n"
+      "                                    default in 2D (or 3D) and its\n"
+      "                                    documentation\n"
       "       signorini --help            show this text\n"
       "Run in parallel with: mpirun -np N signorini FILE.prm\n"
       "Exit status: 0 success, 1 bad input, 2 contact solver did not converge,\n"
@@ -36,27 +37,20 @@ namespace signorini
 
     template <int dim>
     void
-    run_scene(ParameterHandler    &prm,
-              const ParameterFile &input,
-              const bool           resume)
+    run_scene(const ParameterFile &input, const bool resume)
     {
+      ParameterHandler prm;
+      declare_parameters(prm, dim);
+      input.parse(prm);
       Parameters<dim> parameters;
       parameters.parse_parameters(prm, input.folders());
-      // parameters.prm is to run again from anywhere: name the mesh file by
-      // its absolute path.
-      if (parameters.geometry.type == Geometry<dim>::Type::gmsh)
-        {
-          prm.enter_subsection("Geometry");
-          prm.set("Mesh file", parameters.geometry.mesh_file);
-          prm.leave_subsection();
-        }
-      std::ostringstream text;
-      prm.print_parameters(text, ParameterHandler::ShortPRM);
       // The problem is destroyed before a failure propagates, so that its
       // timer does not finish while an exception is in flight.
       std::exception_ptr failure;
       {
-        ContactProblem<dim> problem(parameters, text.str(), MPI_COMM_WORLD);
+        ContactProblem<dim> problem(parameters,
+                                    parameters.text,
+                                    MPI_COMM_WORLD);
         try
           {
             problem.run(resume);
@@ -88,10 +82,19 @@ namespace signorini
         return exit_status::success;
       }
 
-    ParameterHandler prm;
-    declare_parameters(prm);
-    if (arguments.size() == 1 && arguments[0] == "--print-parameters")
+    if (!arguments.empty() && arguments[0] == "--print-parameters")
       {
+        const std::string dim = arguments.size() == 2 ? arguments[1] : "2";
+        if (arguments.size() > 2 || (dim != "2" && dim != "3"))
+          {
+            err << "signorini: error: --print-parameters takes a dimension, "
+                   "2 or 3\n"
+                << usage;
+            return exit_status::input_error;
+          }
+        ParameterHandler prm;
+        declare_parameters(prm, std::stoi(dim));
+        prm.set("Dimension", dim);
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return exit_status::success;
@@ -109,11 +112,10 @@ namespace signorini
         if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
           throw InputError::at(file, "cannot open the parameter file");
         const ParameterFile input(file);
-        input.parse(prm);
-        if (prm.get_integer("Dimension") == 2)
-          run_scene<2>(prm, input, resume);
+        if (read_dimension(input) == 2)
+          run_scene<2>(input, resume);
         else
-          run_scene<3>(prm, input, resume);
+          run_scene<3>(input, resume);
         return exit_status::success;
       }
     catch (const InputError &error)
