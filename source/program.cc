@@ -3,8 +3,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/base/failures.h>
-#include <signorini/input/include_check.h>
 #include <signorini/input/input_error.h>
+#include <signorini/input/parameter_file.h>
 #include <signorini/input/parameters.h>
 #include <signorini/problem/contact_problem.h>
 #include <signorini/program.h>
@@ -13,8 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <regex>
-#include <sstream>
 
 namespace signorini
 {
@@ -27,78 +25,30 @@ namespace signorini
       "       signorini --resume FILE.prm continue after the newest checkpoint\n"
       "                                    in the output directory (from cycle\n"
       "                                    0 if there is none)\n"
-      "       signorini --print-parameters print every parameter with its\n"
-      "                                    default and documentation\n"
+      "       signorini --print-parameters [2|3]\n"
+      "                                    print every parameter with its\n"
+      "                                    default in 2D (or 3D) and its\n"
+      "                                    documentation\n"
       "       signorini --help            show this text\n"
       "Run in parallel with: mpirun -np N signorini FILE.prm\n"
       "Exit status: 0 success, 1 bad input, 2 contact solver did not converge,\n"
       "3 active set cycling, 4 linear solver failed, 5 other error,\n"
       "6 contact solver stalled, 7 augmented Lagrangian multipliers too slow.\n";
 
-    /**
-     * Reads @p file into @p prm. `include` lines name files relative to the
-     * folder of @p file. Errors become InputErrors that read "FILE:LINE: what
-     * is wrong".
-     */
-    void
-    parse_file(ParameterHandler &prm, const std::string &file)
-    {
-      const auto path = std::filesystem::absolute(file);
-      const auto cwd  = std::filesystem::current_path();
-      try
-        {
-          std::filesystem::current_path(path.parent_path());
-          prm.parse_input(path.string());
-          std::filesystem::current_path(cwd);
-        }
-      catch (const ExceptionBase &error)
-        {
-          std::filesystem::current_path(cwd);
-          std::string      message = one_line(error);
-          const std::regex located("^Line <([0-9]+)> of file <([^>]*)>: (.*)$");
-          std::smatch      match;
-          if (std::regex_match(message, match, located))
-            {
-              const std::string where =
-                match[2] == path.string() ? file : std::string(match[2]);
-              throw InputError::at(where + ":" + std::string(match[1]),
-                                   match[3]);
-            }
-          throw InputError::at(file, message);
-        }
-    }
-
     template <int dim>
     void
-    run_scene(ParameterHandler               &prm,
-              const std::string              &file,
-              const std::vector<std::string> &included_folders,
-              const bool                      resume)
+    run_scene(const ParameterFile &input, const bool resume)
     {
-      // Relative file names in entries: from the parameter file's folder,
-      // else from the folders of the files it includes.
-      std::vector<std::string> folders{
-        std::filesystem::absolute(file).parent_path().string()};
-      folders.insert(folders.end(),
-                     included_folders.begin(),
-                     included_folders.end());
+      ParameterHandler prm;
+      declare_parameters(prm, dim);
+      input.parse(prm);
       Parameters<dim> parameters;
-      parameters.parse_parameters(prm, folders);
-      // parameters.prm is to run again from anywhere: name the mesh file by
-      // its absolute path.
-      if (parameters.geometry.type == Geometry<dim>::Type::gmsh)
-        {
-          prm.enter_subsection("Geometry");
-          prm.set("Mesh file", parameters.geometry.mesh_file);
-          prm.leave_subsection();
-        }
-      std::ostringstream text;
-      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      parameters.parse_parameters(prm, input.folders());
       // The problem is destroyed before a failure propagates, so that its
       // timer does not finish while an exception is in flight.
       std::exception_ptr failure;
       {
-        ContactProblem<dim> problem(parameters, text.str(), MPI_COMM_WORLD);
+        ContactProblem<dim> problem(parameters, MPI_COMM_WORLD);
         try
           {
             problem.run(resume);
@@ -130,10 +80,19 @@ namespace signorini
         return exit_status::success;
       }
 
-    ParameterHandler prm;
-    declare_parameters(prm);
-    if (arguments.size() == 1 && arguments[0] == "--print-parameters")
+    if (!arguments.empty() && arguments[0] == "--print-parameters")
       {
+        const std::string dim = arguments.size() == 2 ? arguments[1] : "2";
+        if (arguments.size() > 2 || (dim != "2" && dim != "3"))
+          {
+            err << "signorini: error: --print-parameters takes a dimension, "
+                   "2 or 3\n"
+                << usage;
+            return exit_status::input_error;
+          }
+        ParameterHandler prm;
+        declare_parameters(prm, std::stoi(dim));
+        prm.set("Dimension", dim);
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return exit_status::success;
@@ -150,12 +109,11 @@ namespace signorini
       {
         if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
           throw InputError::at(file, "cannot open the parameter file");
-        const auto included = check_includes(file);
-        parse_file(prm, file);
-        if (prm.get_integer("Dimension") == 2)
-          run_scene<2>(prm, file, included, resume);
+        const ParameterFile input(file);
+        if (read_dimension(input) == 2)
+          run_scene<2>(input, resume);
         else
-          run_scene<3>(prm, file, included, resume);
+          run_scene<3>(input, resume);
         return exit_status::success;
       }
     catch (const InputError &error)

@@ -1,18 +1,29 @@
 #include <signorini/contact/contact_parameters.h>
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 
 namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    const Choices<ContactParameters::Method> methods{
+      {ContactParameters::Method::active_set, "active set"},
+      {ContactParameters::Method::penalty, "penalty"},
+      {ContactParameters::Method::augmented_lagrangian, "augmented lagrangian"},
+      {ContactParameters::Method::none, "none"}};
+  } // namespace
+
   void
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
+    const ContactParameters defaults;
     prm.enter_subsection("Contact");
     prm.declare_entry(
       "Method",
-      "active set",
-      Patterns::Selection("active set|penalty|augmented lagrangian|none"),
+      methods.name(defaults.method),
+      methods.pattern(),
       "active set: exact non-penetration (primal-dual active "
       "set); penalty: penetration = penalty parameter x contact "
       "pressure; augmented lagrangian: Uzawa updates of the contact "
@@ -20,7 +31,7 @@ namespace signorini
       "exact non-penetration; none: no contact.");
     prm.declare_entry(
       "Penalty parameter",
-      "0",
+      entry_text::of(defaults.penalty_parameter),
       Patterns::Double(0.),
       "penalty and augmented lagrangian: epsilon [mm/MPa], the compliance of "
       "the obstacle's surface: contact pressure = penetration / epsilon "
@@ -31,20 +42,20 @@ namespace signorini
       "r = epsilon x E / h_min. 0: h_min / (10 E) of each cycle's mesh "
       "(r = 0.1).");
     prm.declare_entry("Multiplier tolerance",
-                      "1e-8",
+                      entry_text::of(defaults.multiplier_tolerance),
                       Patterns::Double(0.),
                       "augmented lagrangian: converged when no multiplier "
                       "(contact pressure) changes by more than this times "
                       "the largest one in an update, i.e. the penetration is "
                       "below this x epsilon x the peak pressure.");
     prm.declare_entry("Maximum updates",
-                      "100",
+                      entry_text::of(defaults.max_updates),
                       Patterns::Integer(1),
                       "augmented lagrangian: multiplier updates allowed "
                       "per cycle.");
     prm.declare_entry(
       "Remedies",
-      "true",
+      entry_text::of(defaults.remedies),
       Patterns::Bool(),
       "Apply the cheap remedy when a method fails, and report it: active "
       "set cycling is broken by fixing the nodes that flip; penalty Newton "
@@ -54,18 +65,18 @@ namespace signorini
       "done again with a fresh AMG, then by the direct solver. false: stop "
       "with the failure's exit status.");
     prm.declare_entry("Complementarity constant",
-                      "0",
+                      entry_text::of(defaults.complementarity_constant),
                       Patterns::Double(0.),
                       "active set: c [MPa/mm] in the update 'active where "
                       "pressure - c x gap > 0'. It matters only when a cycle "
                       "starts from the previous one. 0: Young's modulus "
                       "divided by the smallest cell diameter.");
     prm.declare_entry("Maximum iterations",
-                      "50",
+                      entry_text::of(defaults.max_iterations),
                       Patterns::Integer(1),
                       "Newton (active set) iterations allowed per cycle.");
     prm.declare_entry("Tolerance",
-                      "1e-8",
+                      entry_text::of(defaults.tolerance),
                       Patterns::Double(0.),
                       "Converged when the active set is unchanged and the "
                       "residual (force balance and complementarity, relative "
@@ -80,21 +91,11 @@ namespace signorini
   ContactParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    const std::string name = prm.get("Method");
-    if (name == "active set")
-      method = Method::active_set;
-    else if (name == "penalty")
-      method = Method::penalty;
-    else if (name == "augmented lagrangian")
-      method = Method::augmented_lagrangian;
-    else if (name == "none")
-      method = Method::none;
-    else
-      throw InputError("Contact/Method", "unknown method '" + name + "'");
-    penalty_parameter        = prm.get_double("Penalty parameter");
-    multiplier_tolerance     = prm.get_double("Multiplier tolerance");
-    max_updates              = prm.get_integer("Maximum updates");
-    remedies                 = prm.get_bool("Remedies");
+    method               = methods.value(prm.get("Method"), "Contact/Method");
+    penalty_parameter    = prm.get_double("Penalty parameter");
+    multiplier_tolerance = prm.get_double("Multiplier tolerance");
+    max_updates          = prm.get_integer("Maximum updates");
+    remedies             = prm.get_bool("Remedies");
     complementarity_constant = prm.get_double("Complementarity constant");
     max_iterations           = prm.get_integer("Maximum iterations");
     tolerance                = prm.get_double("Tolerance");

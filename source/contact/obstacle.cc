@@ -1,5 +1,6 @@
 #include <signorini/contact/height_obstacle.h>
 #include <signorini/contact/obstacle.h>
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
 
@@ -11,15 +12,18 @@ namespace signorini
   void
   ObstacleParameters<dim>::declare_parameters(ParameterHandler &prm)
   {
+    const ObstacleParameters<dim> defaults;
     prm.enter_subsection("Obstacle");
     prm.declare_entry("Height",
-                      "0",
+                      defaults.height_expression,
                       Patterns::Anything(),
                       "Surface of the rigid obstacle [mm]: y = psi(x) in 2D, "
                       "z = psi(x, y) in 3D, a muparser expression, e.g. "
                       "'-0.15' (flat) or '-sqrt(4 - x^2)' (cylinder).");
     prm.declare_entry("Contact boundary ids",
-                      "2",
+                      entry_text::of(
+                        std::vector<unsigned int>(defaults.contact_ids.begin(),
+                                                  defaults.contact_ids.end())),
                       Patterns::Anything(),
                       "Boundary ids (','-separated) that may touch the "
                       "obstacle.");
@@ -31,7 +35,8 @@ namespace signorini
   ObstacleParameters<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Obstacle");
-    height = parse_function<dim - 1>(prm.get("Height"), 1, "Obstacle/Height");
+    height_expression = prm.get("Height");
+    height = parse_function<dim - 1>(height_expression, 1, "Obstacle/Height");
     contact_ids = parse::boundary_ids(prm.get("Contact boundary ids"),
                                       "Obstacle/Contact boundary ids");
     prm.leave_subsection();

@@ -4,6 +4,7 @@
 #include <deal.II/grid/manifold_lib.h>
 
 #include <signorini/discretisation/geometry.h>
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 
 #include <cmath>
@@ -13,15 +14,31 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    template <int dim>
+    const Choices<typename Geometry<dim>::Type> types{
+      {Geometry<dim>::Type::rectangle, "rectangle"},
+      {Geometry<dim>::Type::half_ball, "half ball"},
+      {Geometry<dim>::Type::quarter_disk, "quarter disk"},
+      {Geometry<dim>::Type::quarter_ball, "quarter ball"},
+      {Geometry<dim>::Type::gmsh, "gmsh"}};
+
+    const Choices<GmshOptions::CellType> cell_types{
+      {GmshOptions::CellType::automatic, "automatic"},
+      {GmshOptions::CellType::quadrilateral, "quadrilateral"},
+      {GmshOptions::CellType::simplex, "simplex"}};
+  } // namespace
+
   template <int dim>
   void
   Geometry<dim>::declare_parameters(ParameterHandler &prm)
   {
+    const Geometry<dim> defaults;
     prm.enter_subsection("Geometry");
     prm.declare_entry("Type",
-                      "rectangle",
-                      Patterns::Selection(
-                        "rectangle|half ball|quarter disk|quarter ball|gmsh"),
+                      types<dim>.name(defaults.type),
+                      types<dim>.pattern(),
                       "Shape of the body: a rectangle (box in 3D); a half ball "
                       "(half-disk in 2D) with its curved face down (boundary "
                       "id 0) and its flat face up (id 1); a quarter disk (2D "
@@ -33,22 +50,22 @@ namespace signorini
                       "flat face up (id 1), symmetry planes x = Center x "
                       "(id 2) and y = Center y (id 3); or a Gmsh mesh file.");
     prm.declare_entry("Lower left corner",
-                      "0, 0",
+                      entry_text::of(defaults.lower_left),
                       Patterns::Anything(),
                       "rectangle: corner with the smallest coordinates [mm], "
                       "e.g. '0, 0' (2D) or '0, 0, 0' (3D).");
     prm.declare_entry("Upper right corner",
-                      "1, 1",
+                      entry_text::of(defaults.upper_right),
                       Patterns::Anything(),
                       "rectangle: corner with the largest coordinates [mm].");
     prm.declare_entry("Subdivisions",
-                      "1, 1",
+                      entry_text::of(defaults.subdivisions),
                       Patterns::Anything(),
                       "rectangle: number of cells in x, y[, z] on the coarse "
                       "mesh.");
     prm.declare_entry("Cell type",
-                      "automatic",
-                      Patterns::Selection("automatic|quadrilateral|simplex"),
+                      cell_types.name(defaults.cell_type),
+                      cell_types.pattern(),
                       "quadrilateral: quadrilateral/hexahedral cells with Q1 "
                       "elements; simplex: triangles/tetrahedra with P1 "
                       "elements. rectangle: simplex splits each "
@@ -59,21 +76,21 @@ namespace signorini
                       "four); automatic is what the .geo says (Gmsh's "
                       "default: simplices).");
     prm.declare_entry("Mesh size",
-                      "0",
+                      entry_text::of(defaults.mesh_size),
                       Patterns::Double(0.),
                       "gmsh with a .geo: target cell size [mm] everywhere; 0 "
                       "keeps the sizes the .geo gives.");
     prm.declare_entry("Center",
-                      "0, 1",
+                      entry_text::of(defaults.center),
                       Patterns::Anything(),
                       "half ball, quarter disk, quarter ball: center of the "
                       "flat face [mm].");
     prm.declare_entry("Radius",
-                      "1",
+                      entry_text::of(defaults.radius),
                       Patterns::Double(0.),
                       "half ball, quarter disk, quarter ball: radius [mm].");
     prm.declare_entry("Mesh file",
-                      "",
+                      entry_text::of(defaults.mesh_file),
                       Patterns::Anything(),
                       "gmsh: a .msh mesh, or a .geo geometry that Gmsh "
                       "meshes when the run starts (and remeshes for kelly "
@@ -81,7 +98,7 @@ namespace signorini
                       "parameter file. Physical groups of boundary lines "
                       "(faces in 3D) give the boundary ids.");
     prm.declare_entry("Initial refinement",
-                      "0",
+                      entry_text::of(defaults.initial_refinement),
                       Patterns::Integer(0, 12),
                       "Global refinements of the coarse mesh before cycle 0 "
                       "(a .geo: Gmsh's sizes divided by 2^k).");
@@ -94,12 +111,7 @@ namespace signorini
                                   const std::vector<std::string> &folders)
   {
     prm.enter_subsection("Geometry");
-    const std::string name = prm.get("Type");
-    type                   = name == "rectangle"    ? Type::rectangle :
-                             name == "gmsh"         ? Type::gmsh :
-                             name == "quarter disk" ? Type::quarter_disk :
-                             name == "quarter ball" ? Type::quarter_ball :
-                                                      Type::half_ball;
+    type = types<dim>.value(prm.get("Type"), "Geometry/Type");
     if (type == Type::quarter_disk && dim != 2)
       throw InputError("Geometry/Type",
                        "quarter disk is a two-dimensional shape; use half "
@@ -123,11 +135,7 @@ namespace signorini
                              "must exceed the lower left corner in every "
                              "coordinate");
       }
-    const std::string cells = prm.get("Cell type");
-    cell_type = cells == "simplex" ? GmshOptions::CellType::simplex :
-                cells == "quadrilateral" ?
-                                     GmshOptions::CellType::quadrilateral :
-                                     GmshOptions::CellType::automatic;
+    cell_type = cell_types.value(prm.get("Cell type"), "Geometry/Cell type");
     mesh_size = prm.get_double("Mesh size");
     if (type == Type::half_ball || type == Type::quarter_disk ||
         type == Type::quarter_ball)
@@ -161,6 +169,17 @@ namespace signorini
       }
     initial_refinement = prm.get_integer("Initial refinement");
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  Point<dim>
+  Geometry<dim>::point_with(const double coordinate, const double last)
+  {
+    Point<dim> p;
+    for (unsigned int d = 0; d + 1 < dim; ++d)
+      p[d] = coordinate;
+    p[dim - 1] = last;
+    return p;
   }
 
   template <int dim>

@@ -1,4 +1,5 @@
 #include <signorini/elasticity/linear_solver_parameters.h>
+#include <signorini/input/entry_text.h>
 
 #include <algorithm>
 
@@ -6,25 +7,34 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    const Choices<LinearSolverParameters::Type> types{
+      {LinearSolverParameters::Type::automatic, "automatic"},
+      {LinearSolverParameters::Type::direct, "direct"},
+      {LinearSolverParameters::Type::amg_cg, "amg cg"}};
+  } // namespace
+
   void
   LinearSolverParameters::declare_parameters(ParameterHandler &prm)
   {
+    const LinearSolverParameters defaults;
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Type",
-                      "automatic",
-                      Patterns::Selection("automatic|direct|amg cg"),
+                      types.name(defaults.type),
+                      types.pattern(),
                       "direct: sparse LU (Trilinos Amesos MUMPS); amg cg: "
                       "conjugate gradients with algebraic multigrid (Trilinos "
                       "ML); automatic: direct in 2D on one process, amg cg "
                       "in 3D and on several processes, the faster choice as "
                       "measured (see README).");
     prm.declare_entry("Tolerance",
-                      "1e-12",
+                      entry_text::of(defaults.tolerance),
                       Patterns::Double(0.),
                       "amg cg: residual reduction relative to the right-hand "
                       "side.");
     prm.declare_entry("Newton tolerance",
-                      "1e-4",
+                      entry_text::of(defaults.newton_tolerance),
                       Patterns::Double(0.),
                       "amg cg: residual reduction, relative to the "
                       "right-hand side, of the Newton steps taken while the "
@@ -33,27 +43,29 @@ namespace signorini
                       "leaves the active set as it was, the next step is "
                       "solved to Tolerance.");
     prm.declare_entry("Maximum iterations",
-                      "2000",
+                      entry_text::of(defaults.max_iterations),
                       Patterns::Integer(1),
                       "amg cg: iterations allowed per solve.");
     prm.leave_subsection();
   }
 
   void
-  LinearSolverParameters::parse_parameters(ParameterHandler  &prm,
-                                           const unsigned int dim,
-                                           const unsigned int n_processes)
+  LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    const std::string name              = prm.get("Type");
-    const bool        direct_by_default = dim == 2 && n_processes == 1;
-    type      = name == "direct" || (name == "automatic" && direct_by_default) ?
-                  Type::direct :
-                  Type::amg_cg;
-    tolerance = prm.get_double("Tolerance");
+    type             = types.value(prm.get("Type"), "Linear solver/Type");
+    tolerance        = prm.get_double("Tolerance");
     max_iterations   = prm.get_integer("Maximum iterations");
     newton_tolerance = std::max(prm.get_double("Newton tolerance"), tolerance);
     prm.leave_subsection();
   }
 
+  LinearSolverParameters::Type
+  LinearSolverParameters::resolved_type(const unsigned int dim,
+                                        const unsigned int n_processes) const
+  {
+    if (type != Type::automatic)
+      return type;
+    return dim == 2 && n_processes == 1 ? Type::direct : Type::amg_cg;
+  }
 } // namespace signorini

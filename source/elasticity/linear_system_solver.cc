@@ -233,7 +233,10 @@ namespace signorini
                             const unsigned int                    components,
                             const double relative_tolerance)
   {
-    if (parameters.type == LinearSolverParameters::Type::direct)
+    if (parameters.resolved_type(components,
+                                 Utilities::MPI::n_mpi_processes(
+                                   matrix.get_mpi_communicator())) ==
+        LinearSolverParameters::Type::direct)
       {
         solve_direct(matrix, solution, rhs);
         return 1;

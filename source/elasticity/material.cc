@@ -1,26 +1,34 @@
 #include <signorini/elasticity/material.h>
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 
 namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    const Choices<bool> plane_states{{false, "plane strain"},
+                                     {true, "plane stress"}};
+  } // namespace
+
   void
   Material::declare_parameters(ParameterHandler &prm)
   {
+    const Material defaults;
     prm.enter_subsection("Material");
     prm.declare_entry("Young's modulus",
-                      "2.1e5",
+                      entry_text::of(defaults.young_modulus),
                       Patterns::Double(0.),
                       "Young's modulus E [MPa = N/mm^2].");
     prm.declare_entry(
       "Poisson's ratio",
-      "0.3",
+      entry_text::of(defaults.poisson_ratio),
       Patterns::Double(-1., 0.5),
       "Poisson's ratio nu [-], between -1 and 0.5 (exclusive).");
     prm.declare_entry("Plane state",
-                      "plane strain",
-                      Patterns::Selection("plane strain|plane stress"),
+                      plane_states.name(defaults.plane_stress),
+                      plane_states.pattern(),
                       "2D only: plane strain (thick body, eps_zz = 0) or plane "
                       "stress (thin plate, sigma_zz = 0).");
     prm.leave_subsection();
@@ -32,7 +40,8 @@ namespace signorini
     prm.enter_subsection("Material");
     young_modulus = prm.get_double("Young's modulus");
     poisson_ratio = prm.get_double("Poisson's ratio");
-    plane_stress  = prm.get("Plane state") == "plane stress";
+    plane_stress =
+      plane_states.value(prm.get("Plane state"), "Material/Plane state");
     prm.leave_subsection();
     if (!(young_modulus > 0))
       throw InputError("Material/Young's modulus", "must be positive");

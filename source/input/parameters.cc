@@ -1,29 +1,114 @@
-#include <deal.II/base/mpi.h>
-
+#include <signorini/input/entry_text.h>
 #include <signorini/input/parameters.h>
+
+#include <sstream>
 
 namespace signorini
 {
   using namespace dealii;
 
-  void
-  declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.declare_entry(
-      "Dimension",
-      "2",
-      Patterns::Integer(2, 3),
-      "Space dimension: 2 (plane strain or plane stress) or 3.");
-    Geometry<2>::declare_parameters(prm);
-    Material::declare_parameters(prm);
-    BoundaryConditions<2>::declare_parameters(prm);
-    ObstacleParameters<2>::declare_parameters(prm);
+    void
+    declare_dimension(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Dimension",
+        entry_text::of(default_dimension),
+        Patterns::Integer(2, 3),
+        "Space dimension: 2 (plane strain or plane stress) or 3.");
+    }
+
+    /** @p text, ShortPRM output of a ParameterHandler, with the value of
+     * @p entry in the top-level subsection @p section replaced by
+     * @p value. */
+    std::string
+    with_value(const std::string &text,
+               const std::string &section,
+               const std::string &entry,
+               const std::string &value)
+    {
+      std::istringstream in(text);
+      std::string        result, line;
+      unsigned int       depth      = 0;
+      bool               in_section = false;
+      while (std::getline(in, line))
+        {
+          const auto start = line.find_first_not_of(' ');
+          const auto content =
+            start == std::string::npos ? std::string() : line.substr(start);
+          if (content.rfind("subsection ", 0) == 0)
+            {
+              ++depth;
+              if (depth == 1)
+                in_section = content == "subsection " + section;
+            }
+          else if (content == "end")
+            --depth;
+          else if (depth == 1 && in_section &&
+                   content.rfind("set " + entry + " ", 0) == 0 &&
+                   line.find("= ") != std::string::npos)
+            line = line.substr(0, line.find("= ") + 2) + value;
+          result += line + '\n';
+        }
+      return result;
+    }
+  } // namespace
+
+  void
+  declare_parameters(ParameterHandler &prm, const unsigned int dim)
+  {
+    declare_dimension(prm);
+    if (dim == 2)
+      {
+        Geometry<2>::declare_parameters(prm);
+        Material::declare_parameters(prm);
+        BoundaryConditions<2>::declare_parameters(prm);
+        ObstacleParameters<2>::declare_parameters(prm);
+      }
+    else
+      {
+        Geometry<3>::declare_parameters(prm);
+        Material::declare_parameters(prm);
+        BoundaryConditions<3>::declare_parameters(prm);
+        ObstacleParameters<3>::declare_parameters(prm);
+      }
     ContactParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     Refinement::declare_parameters(prm);
-    OutputParameters<2>::declare_parameters(prm);
-    Reference<2>::declare_parameters(prm);
+    if (dim == 2)
+      {
+        OutputParameters<2>::declare_parameters(prm);
+        Reference<2>::declare_parameters(prm);
+      }
+    else
+      {
+        OutputParameters<3>::declare_parameters(prm);
+        Reference<3>::declare_parameters(prm);
+      }
     CheckpointParameters::declare_parameters(prm);
+  }
+
+  unsigned int
+  read_dimension(const ParameterFile &input)
+  {
+    ParameterHandler prm;
+    declare_dimension(prm);
+    try
+      {
+        input.parse(prm, /*skip_undefined=*/true);
+      }
+    catch (const InputError &)
+      {
+        // An error before it in the file may be one that reading
+        // `Dimension` alone skips (an entry that does not match its
+        // pattern, say): reading every entry throws the first one.
+        ParameterHandler all;
+        declare_parameters(all, default_dimension);
+        input.parse(all);
+        throw;
+      }
+    return prm.get_integer("Dimension");
   }
 
   template <int dim>
@@ -36,12 +121,18 @@ namespace signorini
     boundary_conditions.parse_parameters(prm);
     obstacle.parse_parameters(prm);
     contact.parse_parameters(prm);
-    linear_solver.parse_parameters(
-      prm, dim, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    linear_solver.parse_parameters(prm);
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
+
+    std::ostringstream printed;
+    prm.print_parameters(printed, ParameterHandler::ShortPRM);
+    text = printed.str();
+    // To run again from anywhere: the mesh file by its absolute path.
+    if (geometry.type == Geometry<dim>::Type::gmsh)
+      text = with_value(text, "Geometry", "Mesh file", geometry.mesh_file);
   }
 
   template struct Parameters<2>;

@@ -1,3 +1,4 @@
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 #include <signorini/mesh_adaptation/refinement_parameters.h>
 
@@ -5,18 +6,26 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    const Choices<Refinement::Strategy> strategies{
+      {Refinement::Strategy::global, "global"},
+      {Refinement::Strategy::kelly, "kelly"}};
+  } // namespace
+
   void
   Refinement::declare_parameters(ParameterHandler &prm)
   {
+    const Refinement defaults;
     prm.enter_subsection("Mesh refinement");
     prm.declare_entry("Number of cycles",
-                      "1",
+                      entry_text::of(defaults.n_cycles),
                       Patterns::Integer(1, 100),
                       "Solve-estimate-refine cycles; each starts from the "
                       "previous cycle's solution and active set.");
     prm.declare_entry("Strategy",
-                      "kelly",
-                      Patterns::Selection("global|kelly"),
+                      strategies.name(defaults.strategy),
+                      strategies.pattern(),
                       "global: refine every cell; kelly: refine and coarsen "
                       "the cells with the largest/smallest Kelly error "
                       "indicators (quadrilaterals/hexahedra), or, on "
@@ -25,11 +34,11 @@ namespace signorini
                       "number of cells as the fractions would). A .geo on "
                       "simplices remeshes for global too, halving sizes.");
     prm.declare_entry("Refine fraction",
-                      "0.3",
+                      entry_text::of(defaults.refine_fraction),
                       Patterns::Double(0., 1.),
                       "kelly: fraction of the cells refined per cycle.");
     prm.declare_entry("Coarsen fraction",
-                      "0.03",
+                      entry_text::of(defaults.coarsen_fraction),
                       Patterns::Double(0., 1.),
                       "kelly: fraction of the cells coarsened per cycle.");
     prm.leave_subsection();
@@ -41,7 +50,7 @@ namespace signorini
     prm.enter_subsection("Mesh refinement");
     n_cycles = prm.get_integer("Number of cycles");
     strategy =
-      prm.get("Strategy") == "global" ? Strategy::global : Strategy::kelly;
+      strategies.value(prm.get("Strategy"), "Mesh refinement/Strategy");
     refine_fraction  = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
     prm.leave_subsection();

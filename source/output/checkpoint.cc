@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 #include <signorini/output/checkpoint.h>
 #include <signorini/output/file_output.h>
@@ -21,10 +22,11 @@ namespace signorini
   void
   CheckpointParameters::declare_parameters(ParameterHandler &prm)
   {
+    const CheckpointParameters defaults;
     prm.enter_subsection("Output");
     prm.declare_entry(
       "Checkpoint",
-      "true",
+      entry_text::of(defaults.enabled),
       Patterns::Bool(),
       "After every cycle, write a checkpoint (checkpoint-CC.* in the output "
       "directory: the mesh, the displacement, the contact pressure, the error "

@@ -1,3 +1,4 @@
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 #include <signorini/output/output_parameters.h>
 
@@ -9,38 +10,39 @@ namespace signorini
   void
   OutputParameters<dim>::declare_parameters(ParameterHandler &prm)
   {
+    const OutputParameters<dim> defaults;
     prm.enter_subsection("Output");
     prm.declare_entry("Directory",
-                      "output",
+                      entry_text::of(defaults.directory),
                       Patterns::Anything(),
                       "Folder for the results (relative to the current "
                       "folder); created if missing.");
     prm.declare_entry("Probe points",
-                      "",
+                      entry_text::of(defaults.probe_points),
                       Patterns::Anything(),
                       "Points [mm] whose displacement goes into "
                       "statistics.csv as probe<i>_ux, probe<i>_uy[, "
                       "probe<i>_uz], i counting from 0; ';'-separated, e.g. "
                       "'10, 0; 5, 1'.");
     prm.declare_entry("Contact pressure table",
-                      "false",
+                      entry_text::of(defaults.contact_pressure_table),
                       Patterns::Bool(),
                       "Write contact_pressure-CC.csv for every cycle CC: one "
                       "row per contact node, sorted by x, with its "
                       "coordinates x[, y] [mm], the contact pressure [MPa] "
                       "and the gap to the obstacle after deformation [mm].");
     prm.declare_entry("Verbose",
-                      "true",
+                      entry_text::of(defaults.verbose),
                       Patterns::Bool(),
                       "Print a line per Newton iteration as well as the "
                       "summary of each cycle.");
     prm.declare_entry("Print timings",
-                      "true",
+                      entry_text::of(defaults.print_timings),
                       Patterns::Bool(),
                       "Print the timer summary at the end of the run.");
     prm.declare_entry(
       "Timing table",
-      "false",
+      entry_text::of(defaults.timing_table),
       Patterns::Bool(),
       "Write timings.csv, a row per cycle: the wall time [s] of the contact "
       "solve, of one linear elasticity solve on the same mesh with the same "

@@ -1,3 +1,4 @@
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
 #include <signorini/postprocessing/reference.h>
@@ -14,6 +15,7 @@ namespace signorini
   void
   Reference<dim>::declare_parameters(ParameterHandler &prm)
   {
+    const Reference<dim> defaults;
     prm.enter_subsection("Reference");
     prm.declare_entry(
       "Function constants",
@@ -32,14 +34,14 @@ namespace signorini
       "pressure_error: the L2 norm over the contact boundary of the "
       "computed minus this pressure, relative to the L2 norm of this one.");
     prm.declare_entry("Maximum pressure",
-                      "",
+                      entry_text::of(defaults.max_pressure),
                       Patterns::Anything(),
                       "Closed-form peak contact pressure [MPa], a number or "
                       "an expression of the constants. If given, "
                       "statistics.csv gains max_pressure_error, the "
                       "relative error of max_pressure.");
     prm.declare_entry("Contact width",
-                      "",
+                      entry_text::of(defaults.contact_width),
                       Patterns::Anything(),
                       "Closed-form extent of the contact zone along x [mm], "
                       "a number or an expression of the constants. If given, "
@@ -47,7 +49,7 @@ namespace signorini
                       "relative error of contact_width.");
     prm.declare_entry(
       "Energy",
-      "",
+      entry_text::of(defaults.energy),
       Patterns::Anything(),
       "Potential energy 1/2 a(u,u) - f(u) of the exact solution [N mm; per "
       "mm of thickness in 2D], e.g. from an overkill run; a number or an "

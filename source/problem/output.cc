@@ -35,7 +35,7 @@ namespace signorini
         throw std::runtime_error("cannot create the output directory '" +
                                  directory + "': " + error.message());
       write_atomically(directory + "/parameters.prm",
-                       [this](std::ostream &out) { out << parameter_text; });
+                       [this](std::ostream &out) { out << parameters.text; });
 
       const auto             &mesh = discretisation.triangulation();
       std::vector<Point<dim>> vertices;

@@ -52,8 +52,9 @@ namespace signorini
   ContactProblem<dim>::start_output(const bool resume)
   {
     const std::string &directory = parameters.output.directory;
-    checkpoint =
-      std::make_unique<Checkpoint>(directory, parameter_text, mpi_communicator);
+    checkpoint                   = std::make_unique<Checkpoint>(directory,
+                                              parameters.text,
+                                              mpi_communicator);
     const std::optional<unsigned int> resumed =
       resume ? checkpoint->find_latest() : std::nullopt;
     if (resume && !resumed)

@@ -8,10 +8,8 @@ namespace signorini
 
   template <int dim>
   ContactProblem<dim>::ContactProblem(const Parameters<dim> &parameters,
-                                      const std::string     &parameter_text,
                                       const MPI_Comm         mpi_communicator)
     : parameters(parameters)
-    , parameter_text(parameter_text)
     , mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , timer(mpi_communicator,

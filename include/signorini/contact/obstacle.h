@@ -54,9 +54,11 @@ namespace signorini
   template <int dim>
   struct ObstacleParameters
   {
-    /** psi [mm] of x (2D) or x, y (3D). */
+    /** The expression of psi [mm] of x (2D) or x, y (3D). */
+    std::string height_expression = "0";
+    /** psi, parsed. */
     std::unique_ptr<dealii::FunctionParser<dim - 1>> height;
-    std::set<dealii::types::boundary_id>             contact_ids;
+    std::set<dealii::types::boundary_id>             contact_ids = {2};
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

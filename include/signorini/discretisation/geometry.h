@@ -47,19 +47,28 @@ namespace signorini
       gmsh
     };
 
-    Type                      type = Type::rectangle;
-    dealii::Point<dim>        lower_left;
-    dealii::Point<dim>        upper_right;
-    std::vector<unsigned int> subdivisions;
-    GmshOptions::CellType     cell_type = GmshOptions::CellType::automatic;
+    Type type = Type::rectangle;
+    /** rectangle: the corner with the smallest coordinates [mm]. */
+    dealii::Point<dim> lower_left;
+    /** rectangle: the corner with the largest coordinates [mm]. */
+    dealii::Point<dim> upper_right = point_with(1., 1.);
+    /** rectangle: cells in x, y[, z] on the coarse mesh. */
+    std::vector<unsigned int> subdivisions = std::vector<unsigned int>(dim, 1);
+    GmshOptions::CellType     cell_type    = GmshOptions::CellType::automatic;
     /** gmsh with a .geo: uniform target size [mm], 0: the .geo's sizes. */
-    double             mesh_size = 0.;
-    dealii::Point<dim> center;
-    double             radius = 1.;
+    double mesh_size = 0.;
+    /** half ball, quarter disk, quarter ball: the center of the flat face
+     * [mm]. */
+    dealii::Point<dim> center = point_with(0., 1.);
+    /** half ball, quarter disk, quarter ball: the radius [mm]. */
+    double radius = 1.;
     /** Absolute path, resolved relative to the parameter file's folder. */
-    std::string  mesh_file;
+    std::string mesh_file;
+    /** Global refinements of the coarse mesh before cycle 0. */
     unsigned int initial_refinement = 0;
 
+    /** Declares the entries, with the defaults of a default-constructed
+     * instance. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
@@ -85,6 +94,11 @@ namespace signorini
     void
     create_coarse_mesh(dealii::Triangulation<dim> &coarse_mesh,
                        const MPI_Comm              comm) const;
+
+    /** The point with @p coordinate in every coordinate but the last and
+     * @p last in the last one. */
+    static dealii::Point<dim>
+    point_with(const double coordinate, const double last);
   };
 } // namespace signorini
 

@@ -11,33 +11,42 @@ namespace signorini
    * `direct` factorises with Trilinos Amesos (MUMPS); `amg cg` runs
    * conjugate gradients preconditioned by Trilinos ML algebraic multigrid,
    * with the translations as near-null space; `automatic` takes direct in
-   * 2D on one process, amg cg in 3D and on several processes.
+   * 2D on one process, amg cg in 3D and on several processes (see
+   * resolved_type()).
    */
   class LinearSolverParameters
   {
   public:
     enum class Type
     {
+      automatic,
       direct,
       amg_cg
     };
 
+    /** Declares the entries, with the defaults of a default-constructed
+     * instance. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /** Resolves `automatic` for @p dim space dimensions on @p n_processes
-     * MPI processes. */
     void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const unsigned int        dim,
-                     const unsigned int        n_processes);
+    parse_parameters(dealii::ParameterHandler &prm);
 
-    Type   type      = Type::direct;
+    /** The solver that runs for a system of @p dim displacement components
+     * on @p n_processes MPI processes: `direct` or `amg_cg` as given;
+     * `automatic` is direct for @p dim = 2 on one process and amg cg
+     * otherwise. */
+    Type
+    resolved_type(const unsigned int dim, const unsigned int n_processes) const;
+
+    Type type = Type::automatic;
+    /** amg cg: residual reduction relative to the right-hand side. */
     double tolerance = 1e-12;
     /** amg cg: the looser reduction of the Newton steps taken while the
-     * active set still changes. */
-    double       newton_tolerance = 1e-4;
-    unsigned int max_iterations   = 2000;
+     * active set still changes (at least `tolerance`). */
+    double newton_tolerance = 1e-4;
+    /** amg cg: iterations allowed per solve. */
+    unsigned int max_iterations = 2000;
   };
 } // namespace signorini
 

@@ -30,6 +30,10 @@ namespace signorini
    *   rebuilt only when CG needs markedly more iterations per digit than it
    *   did with a fresh one.
    *
+   * The solver is the one LinearSolverParameters::resolved_type() names for
+   * the number of displacement components and the processes of the
+   * matrix's communicator, at every solve.
+   *
    * With @p remedies, a CG solve that fails is retried with a fresh
    * hierarchy (if it was kept), then by the direct solver; each remedy is
    * reported on a `remedy:` line, and only a system the direct solver cannot

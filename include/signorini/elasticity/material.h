@@ -13,10 +13,15 @@ namespace signorini
    */
   struct Material
   {
+    /** E [MPa = N/mm^2]. */
     double young_modulus = 2.1e5;
+    /** nu [-]. */
     double poisson_ratio = 0.3;
-    bool   plane_stress  = false;
+    /** 2D: plane stress (sigma_zz = 0) instead of plane strain. */
+    bool plane_stress = false;
 
+    /** Declares the entries, with the defaults of a default-constructed
+     * instance. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 

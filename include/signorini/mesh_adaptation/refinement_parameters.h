@@ -14,11 +14,16 @@ namespace signorini
       kelly
     };
 
-    unsigned int n_cycles         = 1;
-    Strategy     strategy         = Strategy::kelly;
-    double       refine_fraction  = 0.3;
-    double       coarsen_fraction = 0.03;
+    /** Solve-estimate-refine cycles. */
+    unsigned int n_cycles = 1;
+    Strategy     strategy = Strategy::kelly;
+    /** kelly: fraction of the cells refined per cycle. */
+    double refine_fraction = 0.3;
+    /** kelly: fraction of the cells coarsened per cycle. */
+    double coarsen_fraction = 0.03;
 
+    /** Declares the entries, with the defaults of a default-constructed
+     * instance. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 

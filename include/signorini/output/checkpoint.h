@@ -14,6 +14,8 @@ namespace signorini
   {
     bool enabled = true;
 
+    /** Declares the entry, with the default of a default-constructed
+     * instance. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 

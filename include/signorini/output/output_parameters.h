@@ -13,15 +13,21 @@ namespace signorini
   template <int dim>
   struct OutputParameters
   {
-    std::string                     directory = "output";
+    /** The folder of the results, relative to the current folder. */
+    std::string directory = "output";
+    /** Points [mm] whose displacement goes into statistics.csv. */
     std::vector<dealii::Point<dim>> probe_points;
-    bool                            verbose       = true;
-    bool                            print_timings = true;
+    /** Print a line per Newton iteration. */
+    bool verbose = true;
+    /** Print the timer summary at the end of the run. */
+    bool print_timings = true;
     /** Write contact_pressure-CC.csv for every cycle. */
     bool contact_pressure_table = false;
     /** Write timings.csv, with a linear solve per cycle to compare with. */
     bool timing_table = false;
 
+    /** Declares the entries, with the defaults of a default-constructed
+     * instance. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 

@@ -28,6 +28,8 @@ namespace signorini
      * 2D], if given. */
     std::optional<double> energy;
 
+    /** Declares the entries, with the defaults of a default-constructed
+     * instance: no reference (empty entries). */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 

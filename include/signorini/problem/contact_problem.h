@@ -40,10 +40,7 @@ namespace signorini
   class ContactProblem
   {
   public:
-    /** @p parameter_text is the complete parameter set, written to
-     * parameters.prm and compared by checkpoints. */
     ContactProblem(const Parameters<dim> &parameters,
-                   const std::string     &parameter_text,
                    const MPI_Comm         mpi_communicator);
 
     /** All cycles; throws SolverFailure or InputError. With @p resume,
@@ -108,7 +105,6 @@ namespace signorini
     write_timings(const CycleTimings &row);
 
     const Parameters<dim>     &parameters;
-    const std::string          parameter_text;
     MPI_Comm                   mpi_communicator;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;

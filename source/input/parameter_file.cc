@@ -1,0 +1,265 @@
+#include <deal.II/base/utilities.h>
+
+#include <signorini/input/parameter_file.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <regex>
+#include <sstream>
+
+namespace signorini
+{
+  namespace fs = std::filesystem;
+
+  /**
+   * Reads a file's logical lines into the text, in place of each `include`
+   * line the lines of the file it names, depth first, and follows the
+   * subsections that ParameterHandler will enter and leave.
+   */
+  class ParameterFile::Reader
+  {
+  public:
+    Reader(ParameterFile &input)
+      : input(input)
+      , folder(fs::path(input.path).parent_path())
+    {
+    }
+
+    /** Reads the file @p canonical, shown to the user as @p shown and named
+     * @p name by ParameterHandler. */
+    void
+    read(const fs::path    &canonical,
+         const std::string &shown,
+         const std::string &name)
+    {
+      chain.push_back(canonical);
+      shown_chain.push_back(shown);
+      std::ifstream in(canonical);
+      std::string   physical, logical;
+      unsigned int  number = 0, first = 0;
+      bool          continued = false;
+      // As ParameterHandler::parse_input joins lines.
+      while (std::getline(in, physical))
+        {
+          ++number;
+          if (!continued)
+            first = number;
+          physical = dealii::Utilities::trim(physical);
+          if (!physical.empty() && physical.back() == '\\')
+            {
+              physical.pop_back();
+              logical += physical;
+              continued = true;
+              continue;
+            }
+          logical += physical;
+          continued = false;
+          scan(logical, name, first, first);
+          logical.clear();
+        }
+      // ParameterHandler numbers a line by its first line, except a line
+      // continued at the end of the file, by the file's last line.
+      if (continued)
+        scan(logical, name, first, number);
+      chain.pop_back();
+      shown_chain.pop_back();
+    }
+
+  private:
+    /** One logical line, from line @p first of the file @p name, which
+     * ParameterHandler's messages give as line @p number. */
+    void
+    scan(const std::string &logical,
+         const std::string &name,
+         const unsigned int first,
+         const unsigned int number)
+    {
+      // As ParameterHandler::scan_line reads a line.
+      std::string line = logical;
+      if (line.find('#') != std::string::npos)
+        line.erase(line.find('#'));
+      std::replace(line.begin(), line.end(), '\t', ' ');
+      line              = dealii::Utilities::trim(line);
+      const auto starts = [&](const char *lower, const char *upper) {
+        return line.rfind(lower, 0) == 0 || line.rfind(upper, 0) == 0;
+      };
+      if (starts("include ", "INCLUDE "))
+        {
+          line.erase(0, 7);
+          line.erase(0, line.find_first_not_of(' '));
+          include(line, shown_chain.back() + ":" + std::to_string(first));
+          return;
+        }
+      if (starts("subsection ", "SUBSECTION "))
+        subsections.push_back(dealii::Utilities::trim(line.substr(11)));
+      else if (starts("end", "END") && !subsections.empty())
+        subsections.pop_back();
+      input.lines.push_back({logical, name, number});
+    }
+
+    /** The `include` line at @p where naming @p name. */
+    void
+    include(const std::string &name, const std::string &where)
+    {
+      const fs::path    target = folder / name;
+      const std::string what   = "include '" + name + "'";
+      // The name as seen from the current folder.
+      const std::string shown =
+        (fs::path(shown_chain.front()).parent_path() / name)
+          .lexically_normal()
+          .string();
+      std::error_code error;
+      if (fs::is_directory(target, error))
+        throw InputError::at(where,
+                             what + " names a directory, not a parameter file");
+      if (!fs::is_regular_file(target, error) || !std::ifstream(target))
+        throw InputError::at(where, what + ": cannot open the file");
+
+      const fs::path canonical = fs::weakly_canonical(target, error);
+      for (unsigned int i = 0; i < chain.size(); ++i)
+        if (chain[i] == canonical)
+          {
+            std::string cycle;
+            for (unsigned int j = i; j < shown_chain.size(); ++j)
+              cycle += shown_chain[j] + " -> ";
+            throw InputError::at(where,
+                                 what + " forms a cycle of includes: " + cycle +
+                                   shown);
+          }
+      const std::string included = canonical.parent_path().string();
+      auto             &folders  = input.folder_list;
+      if (std::find(folders.begin() + 1, folders.end(), included) ==
+          folders.end())
+        folders.push_back(included);
+
+      const auto before = subsections;
+      read(canonical, shown, name);
+      // ParameterHandler requires a file to end in the subsection it began
+      // in; the first file that does not is an error once the lines before
+      // its end are read.
+      if (subsections != before && !input.unbalanced)
+        input.unbalanced = Unbalanced{input.lines.size(),
+                                      subsections.size(),
+                                      unbalanced_error(name, before)};
+      subsections = before;
+    }
+
+    /** ParameterHandler's message for the file @p name that began in the
+     * subsections @p before and ended in the current ones. */
+    InputError
+    unbalanced_error(const std::string              &name,
+                     const std::vector<std::string> &before) const
+    {
+      std::ostringstream paths;
+      if (!before.empty())
+        {
+          paths << "Path before loading input:\n";
+          for (unsigned int i = 0; i < before.size(); ++i)
+            paths << std::setw(i * 2 + 4) << " "
+                  << "subsection " << before[i] << '\n';
+          paths << "Current path:\n";
+          for (unsigned int i = 0; i < subsections.size(); ++i)
+            paths << std::setw(i * 2 + 4) << " "
+                  << "subsection " << subsections[i]
+                  << (i + 1 == subsections.size() ? "" : "\n");
+        }
+      return InputError::at(
+        input.file,
+        one_line(dealii::ParameterHandler::ExcUnbalancedSubsections(
+          name, paths.str())));
+    }
+
+    ParameterFile &input;
+    /** The top file's folder, which include names are relative to. */
+    const fs::path folder;
+    /** The files being read, outermost first, by their canonical paths, and
+     * as the user sees them. */
+    std::vector<fs::path>    chain;
+    std::vector<std::string> shown_chain;
+    /** The subsections entered at the current line. */
+    std::vector<std::string> subsections;
+  };
+
+  ParameterFile::ParameterFile(const std::string &file)
+    : file(file)
+    , path(fs::absolute(file).string())
+  {
+    const auto dot    = path.find_last_of('.');
+    const auto ending = path.substr(dot == std::string::npos ? 0 : dot + 1);
+    whole             = ending == "xml" || ending == "json";
+    known             = whole || ending == "prm";
+    folder_list.push_back(fs::path(path).parent_path().string());
+    std::error_code error;
+    Reader(*this).read(fs::weakly_canonical(path, error), file, path);
+  }
+
+  void
+  ParameterFile::parse(dealii::ParameterHandler &prm,
+                       const bool                skip_undefined) const
+  {
+    if (!known)
+      throw InputError::at(file,
+                           "Unknown input file name extension. Supported "
+                           "types are .prm, .xml, and .json.");
+    try
+      {
+        if (whole)
+          {
+            prm.parse_input(path, "", skip_undefined);
+            return;
+          }
+        std::string       text;
+        const std::size_t n_lines =
+          unbalanced ? unbalanced->n_lines : lines.size();
+        for (std::size_t i = 0; i < n_lines; ++i)
+          text += lines[i].text + '\n';
+        // The subsections that the unbalanced file left open are closed, so
+        // that the error is that file's and not the top file's.
+        if (unbalanced)
+          for (std::size_t i = 0; i < unbalanced->depth; ++i)
+            text += "end\n";
+        std::istringstream in(text);
+        prm.parse_input(in, path, "", skip_undefined);
+      }
+    catch (const dealii::ExceptionBase &error)
+      {
+        throw located(one_line(error));
+      }
+    if (unbalanced)
+      throw unbalanced->error;
+  }
+
+  const std::vector<std::string> &
+  ParameterFile::folders() const
+  {
+    return folder_list;
+  }
+
+  InputError
+  ParameterFile::located(const std::string &message) const
+  {
+    // "Line <N> of file <PATH" names a line of the text: name its file and
+    // its line there instead.
+    std::string  located_message = message;
+    std::smatch  match;
+    const auto   prefix = std::regex("^Line <([0-9]+)> of file <");
+    unsigned int n      = 0;
+    if (std::regex_search(message, match, prefix) &&
+        message.compare(match.length(0), path.size(), path) == 0 &&
+        (n = std::stoul(match[1])) >= 1 && n <= lines.size())
+      located_message = "Line <" + std::to_string(lines[n - 1].number) +
+                        "> of file <" + lines[n - 1].file +
+                        message.substr(match.length(0) + path.size());
+
+    const std::regex located_line("^Line <([0-9]+)> of file <([^>]*)>: (.*)$");
+    if (std::regex_match(located_message, match, located_line))
+      {
+        const std::string where =
+          match[2] == path ? file : std::string(match[2]);
+        return InputError::at(where + ":" + std::string(match[1]), match[3]);
+      }
+    return InputError::at(file, located_message);
+  }
+} // namespace signorini
