@@ -104,7 +104,7 @@ namespace
       , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     {
       ParameterHandler prm;
-      declare_parameters(prm);
+      declare_parameters(prm, 2);
       prm.parse_input_from_string(text);
       parameters.parse_parameters(prm, {});
       const MPI_Comm comm = MPI_COMM_WORLD;

@@ -66,7 +66,7 @@ namespace
     explicit Scene(const std::string &text)
     {
       ParameterHandler prm;
-      declare_parameters(prm);
+      declare_parameters(prm, dim);
       prm.parse_input_from_string(text);
       parameters.parse_parameters(prm, {});
       discretisation =

@@ -100,11 +100,11 @@ namespace signorini
     active_set_signature() const;
 
   private:
-    const std::set<dealii::types::boundary_id> &ids;
-    const Obstacle<dim>                        &obstacle;
-    MPI_Comm                                    mpi_communicator;
-    double                                      tolerance = 0.;
-    std::vector<ContactNode<dim>>               contact_nodes;
+    const std::set<dealii::types::boundary_id> ids;
+    const Obstacle<dim>                       &obstacle;
+    MPI_Comm                                   mpi_communicator;
+    double                                     tolerance = 0.;
+    std::vector<ContactNode<dim>>              contact_nodes;
   };
 } // namespace signorini
 
