@@ -59,6 +59,12 @@ namespace signorini
     });
   }
 
-  template class ContactProblem<2>;
-  template class ContactProblem<3>;
+  template double
+  ContactProblem<2>::time_linear_solve();
+  template double
+  ContactProblem<3>::time_linear_solve();
+  template void
+  ContactProblem<2>::write_timings(const CycleTimings &);
+  template void
+  ContactProblem<3>::write_timings(const CycleTimings &);
 } // namespace signorini

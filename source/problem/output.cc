@@ -277,6 +277,16 @@ namespace signorini
       });
   }
 
-  template class ContactProblem<2>;
-  template class ContactProblem<3>;
+  template void
+  ContactProblem<2>::write_obstacle_and_parameters() const;
+  template void
+  ContactProblem<3>::write_obstacle_and_parameters() const;
+  template void
+  ContactProblem<2>::record_statistics(unsigned int);
+  template void
+  ContactProblem<3>::record_statistics(unsigned int);
+  template void
+  ContactProblem<2>::output_results(unsigned int);
+  template void
+  ContactProblem<3>::output_results(unsigned int);
 } // namespace signorini

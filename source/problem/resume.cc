@@ -189,6 +189,16 @@ namespace signorini
       checkpoint->write_state(cycle, out.str());
   }
 
-  template class ContactProblem<2>;
-  template class ContactProblem<3>;
+  template std::optional<unsigned int>
+  ContactProblem<2>::start_output(bool);
+  template std::optional<unsigned int>
+  ContactProblem<3>::start_output(bool);
+  template void
+  ContactProblem<2>::restore_checkpoint(unsigned int, double &);
+  template void
+  ContactProblem<3>::restore_checkpoint(unsigned int, double &);
+  template void
+  ContactProblem<2>::save_checkpoint(unsigned int, double);
+  template void
+  ContactProblem<3>::save_checkpoint(unsigned int, double);
 } // namespace signorini

@@ -162,6 +162,24 @@ namespace signorini
       }
   }
 
-  template class ContactProblem<2>;
-  template class ContactProblem<3>;
+  template void
+  ContactProblem<2>::run(bool);
+  template void
+  ContactProblem<3>::run(bool);
+  template void
+  ContactProblem<2>::run_cycles(bool);
+  template void
+  ContactProblem<3>::run_cycles(bool);
+  template void
+  ContactProblem<2>::solve(unsigned int);
+  template void
+  ContactProblem<3>::solve(unsigned int);
+  template void
+  ContactProblem<2>::estimate_error();
+  template void
+  ContactProblem<3>::estimate_error();
+  template void
+  ContactProblem<2>::refine_grid();
+  template void
+  ContactProblem<3>::refine_grid();
 } // namespace signorini

@@ -62,6 +62,10 @@ namespace signorini
     contact_surface.setup(discretisation);
   }
 
-  template class ContactProblem<2>;
-  template class ContactProblem<3>;
+  template ContactProblem<2>::ContactProblem(const Parameters<2> &, MPI_Comm);
+  template ContactProblem<3>::ContactProblem(const Parameters<3> &, MPI_Comm);
+  template void
+  ContactProblem<2>::setup_system();
+  template void
+  ContactProblem<3>::setup_system();
 } // namespace signorini
