@@ -17,7 +17,7 @@ namespace signorini
   namespace
   {
     template <int dim>
-    const Choices<typename Geometry<dim>::Type> types{
+    const Choices<typename Geometry<dim>::Type> shape_types{
       {Geometry<dim>::Type::rectangle, "rectangle"},
       {Geometry<dim>::Type::half_ball, "half ball"},
       {Geometry<dim>::Type::quarter_disk, "quarter disk"},
@@ -37,8 +37,8 @@ namespace signorini
     const Geometry<dim> defaults;
     prm.enter_subsection("Geometry");
     prm.declare_entry("Type",
-                      types<dim>.name(defaults.type),
-                      types<dim>.pattern(),
+                      shape_types<dim>.name(defaults.type),
+                      shape_types<dim>.pattern(),
                       "Shape of the body: a rectangle (box in 3D); a half ball "
                       "(half-disk in 2D) with its curved face down (boundary "
                       "id 0) and its flat face up (id 1); a quarter disk (2D "
@@ -111,7 +111,7 @@ namespace signorini
                                   const std::vector<std::string> &folders)
   {
     prm.enter_subsection("Geometry");
-    type = types<dim>.value(prm.get("Type"), "Geometry/Type");
+    type = shape_types<dim>.value(prm.get("Type"), "Geometry/Type");
     if (type == Type::quarter_disk && dim != 2)
       throw InputError("Geometry/Type",
                        "quarter disk is a two-dimensional shape; use half "

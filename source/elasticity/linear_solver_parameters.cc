@@ -9,7 +9,7 @@ namespace signorini
 
   namespace
   {
-    const Choices<LinearSolverParameters::Type> types{
+    const Choices<LinearSolverParameters::Type> solver_types{
       {LinearSolverParameters::Type::automatic, "automatic"},
       {LinearSolverParameters::Type::direct, "direct"},
       {LinearSolverParameters::Type::amg_cg, "amg cg"}};
@@ -21,8 +21,8 @@ namespace signorini
     const LinearSolverParameters defaults;
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Type",
-                      types.name(defaults.type),
-                      types.pattern(),
+                      solver_types.name(defaults.type),
+                      solver_types.pattern(),
                       "direct: sparse LU (Trilinos Amesos MUMPS); amg cg: "
                       "conjugate gradients with algebraic multigrid (Trilinos "
                       "ML); automatic: direct in 2D on one process, amg cg "
@@ -53,7 +53,7 @@ namespace signorini
   LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type             = types.value(prm.get("Type"), "Linear solver/Type");
+    type             = solver_types.value(prm.get("Type"), "Linear solver/Type");
     tolerance        = prm.get_double("Tolerance");
     max_iterations   = prm.get_integer("Maximum iterations");
     newton_tolerance = std::max(prm.get_double("Newton tolerance"), tolerance);
