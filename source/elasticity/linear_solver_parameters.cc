@@ -53,9 +53,9 @@ namespace signorini
   LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type             = solver_types.value(prm.get("Type"), "Linear solver/Type");
-    tolerance        = prm.get_double("Tolerance");
-    max_iterations   = prm.get_integer("Maximum iterations");
+    type           = solver_types.value(prm.get("Type"), "Linear solver/Type");
+    tolerance      = prm.get_double("Tolerance");
+    max_iterations = prm.get_integer("Maximum iterations");
     newton_tolerance = std::max(prm.get_double("Newton tolerance"), tolerance);
     prm.leave_subsection();
   }
