@@ -43,13 +43,13 @@ namespace signorini
     plane_stress =
       plane_states.value(prm.get("Plane state"), "Material/Plane state");
     prm.leave_subsection();
-    if (!(young_modulus > 0))
-      throw InputError("Material/Young's modulus", "must be positive");
-    if (!(poisson_ratio > -1.))
-      throw InputError("Material/Poisson's ratio", "must be above -1");
-    if (!(poisson_ratio < 0.5))
-      throw InputError("Material/Poisson's ratio",
-                       "must be below 0.5 (incompressible material)");
+    parse::in_range(young_modulus,
+                    parse::Range::positive(),
+                    "Material/Young's modulus");
+    parse::in_range(poisson_ratio,
+                    parse::Range::open(-1., 0.5),
+                    "Material/Poisson's ratio",
+                    "0.5 is incompressible");
   }
 
   double
