@@ -50,6 +50,10 @@ namespace signorini
                     parse::Range::open(-1., 0.5),
                     "Material/Poisson's ratio",
                     "0.5 is incompressible");
+    if (poisson_ratio < 0)
+      warn("Material/Poisson's ratio",
+           "is negative, an auxetic material that thickens when stretched; "
+           "is the sign right?");
   }
 
   double
