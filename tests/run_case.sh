@@ -23,8 +23,10 @@ else
   "$program" "$prm" > run.log 2>&1
 fi
 status=$?
-# Messages name files by absolute path; keep the output independent of it.
-sed "s|$(dirname "$prm")/||g" run.log
+# Messages name files by absolute path, and the memory of the machine; keep
+# the output independent of both.
+sed -e "s|$(dirname "$prm")/||g" \
+  -e 's|[0-9.e+]* GB are available|(machine) GB are available|' run.log
 echo "exit status: $status"
 stats=$(find output -name statistics.csv 2>/dev/null | head -n 1)
 [ -d output ] && { echo "files written:"; find output -type f | sort; }
