@@ -3,6 +3,7 @@
 
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
+#include <signorini/elasticity/rigid_motions.h>
 #include <signorini/problem/contact_problem.h>
 
 #include <chrono>
@@ -61,6 +62,11 @@ namespace signorini
          {"Obstacle/Contact boundary ids", parameters.obstacle.contact_ids}});
     }
     setup_system();
+    check_rigid_motions_held(discretisation,
+                             contact_surface.nodes(),
+                             rigid_body_modes(discretisation),
+                             parameters.contact.method !=
+                               ContactParameters::Method::none);
     run_time += now() - start;
     const auto resumed = start_output(resume);
     if (resumed)
