@@ -7,6 +7,7 @@
 #include <signorini/problem/contact_problem.h>
 
 #include <chrono>
+#include <iostream>
 #include <set>
 
 namespace signorini
@@ -67,6 +68,11 @@ namespace signorini
                              rigid_body_modes(discretisation),
                              parameters.contact.method !=
                                ContactParameters::Method::none);
+    if (const auto warning =
+          parameters.material.check_element(discretisation.simplex());
+        !warning.empty() &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "signorini: warning: " << warning << std::endl;
     run_time += now() - start;
     const auto resumed = start_output(resume);
     if (resumed)
