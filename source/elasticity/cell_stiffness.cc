@@ -36,7 +36,14 @@ namespace signorini
   {
     const unsigned int               n = fe_values.get_fe().n_dofs_per_cell();
     const FEValuesExtractors::Vector displacement(0);
+    const bool mean_dilatation = material.template mean_dilatation<dim>(
+      fe_values.get_fe().reference_cell().is_simplex());
     std::vector<SymmetricTensor<2, dim>> strain(n), stress(n);
+    // With mean dilatation: the integrals of div phi_i and the cell's
+    // volume; the volumetric part lambda (div u)(div v) of the stiffness is
+    // then lambda D_i D_j / V, and the pointwise part 2 mu eps : eps.
+    Vector<double> divergence(mean_dilatation ? n : 0);
+    double         volume = 0.;
     cell_matrix.reinit(n, n);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
@@ -44,12 +51,26 @@ namespace signorini
         for (unsigned int i = 0; i < n; ++i)
           {
             strain[i] = fe_values[displacement].symmetric_gradient(i, q);
-            stress[i] = material.template stress<dim>(strain[i]) * JxW;
+            if (mean_dilatation)
+              {
+                stress[i] = 2. * material.mu() * JxW * strain[i];
+                divergence(i) += trace(strain[i]) * JxW;
+              }
+            else
+              stress[i] = material.template stress<dim>(strain[i]) * JxW;
           }
+        volume += JxW;
         // The matrix is symmetric: the lower triangle, mirrored below.
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j <= i; ++j)
             cell_matrix(i, j) += strain[i] * stress[j];
+      }
+    if (mean_dilatation)
+      {
+        const double factor = material.template lambda<dim>() / volume;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) += factor * divergence(i) * divergence(j);
       }
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < i; ++j)
@@ -132,17 +153,45 @@ namespace signorini
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
     fe_values[displacement].get_function_symmetric_gradients(u, strain);
-    internal             = 0;
-    double strain_energy = 0.;
+    internal = 0;
+    if (!material.template mean_dilatation<dim>(
+          fe_values.get_fe().reference_cell().is_simplex()))
+      {
+        double strain_energy = 0.;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const auto stress = material.template stress<dim>(strain[q]);
+            strain_energy += 0.5 * (strain[q] * stress) * fe_values.JxW(q);
+            for (unsigned int i = 0; i < internal.size(); ++i)
+              internal(i) += fe_values[displacement].symmetric_gradient(i, q) *
+                             stress * fe_values.JxW(q);
+          }
+        return strain_energy;
+      }
+
+    // Mean dilatation: 2 mu eps(phi_i) : eps(u) pointwise, and
+    // lambda D_i Theta / V with D_i, Theta the integrals of div phi_i and
+    // div u over the cell of volume V.
+    const double   mu = material.mu(), lambda = material.template lambda<dim>();
+    Vector<double> divergence(internal.size());
+    double         volume = 0., dilatation = 0., strain_energy = 0.;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        const auto stress = material.template stress<dim>(strain[q]);
-        strain_energy += 0.5 * (strain[q] * stress) * fe_values.JxW(q);
+        const double JxW = fe_values.JxW(q);
+        volume += JxW;
+        dilatation += trace(strain[q]) * JxW;
+        strain_energy += mu * (strain[q] * strain[q]) * JxW;
         for (unsigned int i = 0; i < internal.size(); ++i)
-          internal(i) += fe_values[displacement].symmetric_gradient(i, q) *
-                         stress * fe_values.JxW(q);
+          {
+            const auto strain_i =
+              fe_values[displacement].symmetric_gradient(i, q);
+            internal(i) += 2. * mu * (strain_i * strain[q]) * JxW;
+            divergence(i) += trace(strain_i) * JxW;
+          }
       }
-    return strain_energy;
+    for (unsigned int i = 0; i < internal.size(); ++i)
+      internal(i) += lambda * divergence(i) * dilatation / volume;
+    return strain_energy + 0.5 * lambda * dilatation * dilatation / volume;
   }
 
   template class CellStiffness<2>;

@@ -38,13 +38,16 @@ namespace signorini
   DisplacementFields<dim>::evaluate(const Point<dim>     &point,
                                     const Tensor<1, dim> &displacement,
                                     const Tensor<2, dim> &gradient,
-                                    double               *fields) const
+                                    double               *fields,
+                                    const double *cell_mean_dilatation) const
   {
     SymmetricTensor<2, dim> strain;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i; j < dim; ++j)
         strain[i][j] = 0.5 * (gradient[i][j] + gradient[j][i]);
-    const auto sigma = material.stress<dim>(strain);
+    const double volumetric =
+      cell_mean_dilatation ? *cell_mean_dilatation : trace(strain);
+    const auto sigma = material.stress<dim>(strain, volumetric);
 
     // The full 3x3 stress, with the out-of-plane entry of a 2D state.
     double s[3][3] = {};
@@ -52,7 +55,7 @@ namespace signorini
       for (unsigned int j = 0; j < dim; ++j)
         s[i][j] = sigma[i][j];
     if (dim == 2)
-      s[2][2] = material.out_of_plane_stress<dim>(strain);
+      s[2][2] = material.out_of_plane_stress<dim>(volumetric);
     fields[0] = std::sqrt(
       0.5 * ((s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
              (s[1][1] - s[2][2]) * (s[1][1] - s[2][2]) +
@@ -71,6 +74,13 @@ namespace signorini
     Tensor<1, dim> normal;
     const double   gap   = obstacle.gap(point, normal);
     fields[n_fields - 1] = gap + normal * displacement;
+  }
+
+  template <int dim>
+  const Material &
+  DisplacementFields<dim>::material_law() const
+  {
+    return material;
   }
 
   template class DisplacementFields<2>;

@@ -21,7 +21,9 @@ namespace signorini
    * stress_zz is the out-of-plane stress (zero in plane stress).
    *
    * One call evaluates all of them from the displacement and its gradient,
-   * which the output computes once per point for every field.
+   * which the output computes once per point for every field. Cells with
+   * mean dilatation (Material::mean_dilatation) pass the cell's mean
+   * volumetric strain, which the stress takes instead of div u.
    */
   template <int dim>
   class DisplacementFields
@@ -43,7 +45,13 @@ namespace signorini
     evaluate(const dealii::Point<dim>     &point,
              const dealii::Tensor<1, dim> &displacement,
              const dealii::Tensor<2, dim> &gradient,
-             double                       *fields) const;
+             double                       *fields,
+             const double *cell_mean_dilatation = nullptr) const;
+
+    /** The material, whose mean_dilatation() tells which cells pass their
+     * mean volumetric strain to evaluate(). */
+    const Material &
+    material_law() const;
 
   private:
     const Material      &material;
