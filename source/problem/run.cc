@@ -23,7 +23,8 @@ namespace signorini
     catch (...)
       {
         // A failed run reports one line, not a timer summary, and keeps the
-        // files of its finished cycles.
+        // files of its finished cycles: the writes queued finish, what is
+        // unfinished is removed.
         timer.disable_output();
         try
           {
@@ -33,6 +34,7 @@ namespace signorini
         catch (...)
           {
           }
+        tidy_output();
         throw;
       }
   }
