@@ -68,7 +68,7 @@ namespace signorini
           return false;
         char *stop = nullptr;
         errno      = 0;
-        value = std::strtoull(next.c_str() + key.size() + 1, &stop, 10);
+        value      = std::strtoull(next.c_str() + key.size() + 1, &stop, 10);
         return errno == 0 && stop != next.c_str() + key.size() + 1 &&
                *stop == '\0';
       }
@@ -186,12 +186,12 @@ namespace signorini
     pieces.clear();
     for (std::uint64_t i = 0; i < n_pieces; ++i)
       {
-        Piece         piece;
-        char          name[256], crc[9];
+        Piece              piece;
+        char               name[256], crc[9];
         unsigned long long size = 0;
         if (!reader.line(line) ||
-            std::sscanf(line.c_str(), "piece %255s %llu %8s", name, &size, crc) !=
-              3)
+            std::sscanf(
+              line.c_str(), "piece %255s %llu %8s", name, &size, crc) != 3)
           return "not a checkpoint this signorini can read";
         piece.name          = name;
         piece.checksum.size = size;
