@@ -53,11 +53,15 @@ namespace signorini
   ContactProblem<dim>::start_output(const bool resume)
   {
     const std::string &directory = parameters.output.directory;
-    checkpoint                   = std::make_unique<Checkpoint>(directory,
+    // The run owns the directory (and tidy_output() may remove what it
+    // left unfinished) once the checkpoint to resume from is found: a
+    // refused resume leaves the directory as it was.
+    auto found = std::make_unique<Checkpoint>(directory,
                                               parameters.text,
                                               mpi_communicator);
     const std::optional<unsigned int> resumed =
-      resume ? checkpoint->find_latest() : std::nullopt;
+      resume ? found->find_latest() : std::nullopt;
+    checkpoint = std::move(found);
     if (resume && !resumed)
       pcout << "No checkpoint in " << directory << ": starting at cycle 0"
             << std::endl;
