@@ -202,29 +202,33 @@ namespace signorini
               if (member.checkpoint && !member.partial)
                 cycles.insert(*member.cycle);
             }
+        // A checkpoint without its state file is one whose writing was
+        // stopped (its state is written last): it is passed over with a
+        // note. One whose files are damaged is passed over with a warning,
+        // or refused if no intact one is left.
         std::vector<std::string> faults;
         CheckpointManifest       manifest;
         for (const unsigned int cycle : cycles)
           {
             const std::string name = state_file(cycle);
-            std::string       fault;
             std::ifstream     in(name, std::ios::binary);
             if (!in)
-              fault = name + ": missing; the checkpoint of cycle " +
-                      std::to_string(cycle) + " is incomplete";
-            else
               {
-                fault = manifest.read(
-                  std::string(std::istreambuf_iterator<char>(in), {}));
-                if (!fault.empty())
-                  fault = name + ": " + fault;
-                else if (manifest.cycle != cycle)
-                  fault = name +
-                          ": damaged (it holds the checkpoint of cycle " +
-                          std::to_string(manifest.cycle) + ")";
-                else
-                  fault = manifest.verify_pieces(directory);
+                std::cout << "Checkpoint of cycle " << cycle
+                          << " incomplete (no " << name
+                          << "; the run stopped while writing it): passed over"
+                          << std::endl;
+                continue;
               }
+            std::string fault = manifest.read(
+              std::string(std::istreambuf_iterator<char>(in), {}));
+            if (!fault.empty())
+              fault = name + ": " + fault;
+            else if (manifest.cycle != cycle)
+              fault = name + ": damaged (it holds the checkpoint of cycle " +
+                      std::to_string(manifest.cycle) + ")";
+            else
+              fault = manifest.verify_pieces(directory);
             if (fault.empty())
               {
                 found.exists = true;
@@ -276,10 +280,67 @@ namespace signorini
   Checkpoint::write_state(const unsigned int cycle,
                           const std::string &state) const
   {
+    // Each process reads a slice of every mesh piece for its checksum;
+    // process 0 joins the slices' checksums.
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    std::vector<std::pair<std::string, std::uint64_t>> pieces;
+    if (rank == 0)
+      for (const auto &name : mesh_pieces(cycle))
+        pieces.emplace_back(name, size_of(directory + "/" + name));
+    pieces = Utilities::MPI::broadcast(mpi_communicator, pieces, 0);
+    std::vector<std::pair<std::uint32_t, std::uint64_t>> slices;
+    std::string                                          error;
+    try
+      {
+        for (const auto &[name, size] : pieces)
+          {
+            const std::uint64_t begin = size * rank / n_ranks,
+                                end   = size * (rank + 1) / n_ranks;
+            const auto slice =
+              checksum_of_file(directory + "/" + name, begin, end - begin);
+            slices.emplace_back(slice.crc, slice.size);
+          }
+      }
+    catch (const std::exception &failure)
+      {
+        error = failure.what();
+      }
+    const auto all_slices =
+      Utilities::MPI::gather(mpi_communicator,
+                             std::make_pair(slices, error),
+                             0);
     write_collectively(mpi_communicator, [&]() {
-      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-        write_state_file(cycle, state);
+      if (rank != 0)
+        return;
+      std::vector<CheckpointManifest::Piece> checksums;
+      for (unsigned int i = 0; i < pieces.size(); ++i)
+        {
+          FileChecksum checksum;
+          for (const auto &[process_slices, process_error] : all_slices)
+            {
+              if (!process_error.empty())
+                throw std::runtime_error(process_error);
+              checksum = concatenate(checksum,
+                                     {process_slices[i].second,
+                                      process_slices[i].first});
+            }
+          checksums.push_back({pieces[i].first, checksum});
+        }
+      write_manifest(cycle, state, checksums);
     });
+  }
+
+  void
+  Checkpoint::write_state_file(const unsigned int cycle,
+                               const std::string &state) const
+  {
+    std::vector<CheckpointManifest::Piece> pieces;
+    for (const auto &name : mesh_pieces(cycle))
+      pieces.push_back({name, checksum_of_file(directory + "/" + name)});
+    write_manifest(cycle, state, pieces);
   }
 
   void
@@ -321,16 +382,16 @@ namespace signorini
   }
 
   void
-  Checkpoint::write_state_file(const unsigned int cycle,
-                               const std::string &state) const
+  Checkpoint::write_manifest(
+    const unsigned int                            cycle,
+    const std::string                            &state,
+    const std::vector<CheckpointManifest::Piece> &pieces) const
   {
     CheckpointManifest manifest;
     manifest.cycle      = cycle;
     manifest.parameters = parameter_text;
     manifest.state      = state;
-    for (const auto &name : mesh_pieces(cycle))
-      manifest.pieces.push_back(
-        {name, checksum_of_file(directory + "/" + name)});
+    manifest.pieces     = pieces;
     write_atomically(state_file(cycle),
                      [&](std::ostream &out) { out << manifest.text(); });
     // The new checkpoint is complete: the older ones go.

@@ -1,10 +1,12 @@
 #include <signorini/output/checkpoint_manifest.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <limits>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -100,7 +102,9 @@ namespace signorini
   } // namespace
 
   FileChecksum
-  checksum_of_file(const std::string &path)
+  checksum_of_file(const std::string  &path,
+                   const std::uint64_t offset,
+                   const std::uint64_t length)
   {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0)
@@ -109,9 +113,12 @@ namespace signorini
     FileChecksum      checksum;
     std::vector<char> buffer(1 << 20);
     uLong             crc = crc32_z(0L, Z_NULL, 0);
-    while (true)
+    while (checksum.size < length)
       {
-        const ssize_t n = ::read(fd, buffer.data(), buffer.size());
+        const std::size_t wanted =
+          std::min<std::uint64_t>(buffer.size(), length - checksum.size);
+        const ssize_t n =
+          ::pread(fd, buffer.data(), wanted, offset + checksum.size);
         if (n < 0 && errno == EINTR)
           continue;
         if (n < 0)
@@ -129,6 +136,22 @@ namespace signorini
     ::close(fd);
     checksum.crc = crc;
     return checksum;
+  }
+
+  FileChecksum
+  checksum_of_file(const std::string &path)
+  {
+    return checksum_of_file(path, 0, std::numeric_limits<std::uint64_t>::max());
+  }
+
+  FileChecksum
+  concatenate(const FileChecksum &first, const FileChecksum &second)
+  {
+    FileChecksum result;
+    result.size = first.size + second.size;
+    result.crc =
+      crc32_combine(first.crc, second.crc, static_cast<z_off_t>(second.size));
+    return result;
   }
 
   std::string

@@ -2,8 +2,9 @@
 // written; every truncation and every single-bit change of the text
 // refused (CRC-32 detects every error of one bit); a state file of the
 // format before checksums named as such. checksum_of_file against the
-// CRC-32 check value of "123456789" (0xcbf43926). verify_pieces on pieces
-// intact, shorter, longer, changed and missing.
+// CRC-32 check value of "123456789" (0xcbf43926); the checksums of slices
+// of a file joined equal the whole file's. verify_pieces on pieces intact,
+// shorter, longer, changed and missing.
 
 #include <signorini/output/checkpoint_manifest.h>
 
@@ -48,15 +49,40 @@ main()
               check.crc,
               check.crc == 0xcbf43926u && check.size == 9 ? "PASS" : "FAIL");
 
-  const std::string mesh(5000, 'm'), info = "version 4\n";
+  std::string mesh(5000, ' ');
+  for (unsigned int i = 0; i < mesh.size(); ++i)
+    mesh[i] = static_cast<char>((31 * i + i / 7) % 256);
+  const std::string info = "version 4\n";
   write_file(directory + "/checkpoint-03.mesh", mesh);
   write_file(directory + "/checkpoint-03.mesh.info", info);
+
+  // The checksums of slices, as the processes of a parallel run compute
+  // them, joined: that of the whole file, for any number of slices.
+  for (const unsigned int n : {1u, 2u, 3u, 7u, 6000u})
+    {
+      FileChecksum joined;
+      for (unsigned int i = 0; i < n; ++i)
+        joined = concatenate(joined,
+                             checksum_of_file(directory + "/checkpoint-03.mesh",
+                                              5000ull * i / n,
+                                              5000ull * (i + 1) / n -
+                                                5000ull * i / n));
+      const auto whole = checksum_of_file(directory + "/checkpoint-03.mesh");
+      std::printf("%u slices joined: size %llu, crc32 %08x, whole %08x: %s\n",
+                  n,
+                  static_cast<unsigned long long>(joined.size),
+                  joined.crc,
+                  whole.crc,
+                  joined.crc == whole.crc && joined.size == 5000 ? "PASS" :
+                                                                   "FAIL");
+    }
 
   CheckpointManifest written;
   written.cycle      = 3;
   written.parameters = "set Dimension = 2\nsubsection Output\nend\n";
   written.state      = std::string("binary\0state\n\xff", 14);
-  for (const std::string name : {"checkpoint-03.mesh", "checkpoint-03.mesh.info"})
+  for (const std::string name :
+       {"checkpoint-03.mesh", "checkpoint-03.mesh.info"})
     written.pieces.push_back({name, checksum_of_file(directory + "/" + name)});
   const std::string text = written.text();
 
@@ -104,7 +130,7 @@ main()
   write_file(directory + "/checkpoint-03.mesh", mesh + "m");
   std::cout << "  longer: " << read.verify_pieces(directory) << '\n';
   std::string changed = mesh;
-  changed[2500]       = 'n';
+  changed[2500] ^= 1;
   write_file(directory + "/checkpoint-03.mesh", changed);
   std::cout << "  changed: " << read.verify_pieces(directory) << '\n';
   write_file(directory + "/checkpoint-03.mesh", mesh);

@@ -10,13 +10,12 @@
 #include <signorini/base/interruption.h>
 #include <signorini/output/file_output.h>
 
-#include <sys/resource.h>
-
 #include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <sys/resource.h>
 
 using namespace signorini;
 namespace fs = std::filesystem;
@@ -53,9 +52,9 @@ main(int argc, char **argv)
   fs::create_directory("written");
   const std::string block(10000, 'x');
   attempt("10 kB", "written/a.txt", [&](std::ostream &out) { out << block; });
-  attempt("into a missing folder",
-          "missing/a.txt",
-          [&](std::ostream &out) { out << block; });
+  attempt("into a missing folder", "missing/a.txt", [&](std::ostream &out) {
+    out << block;
+  });
   attempt("a writer that throws", "written/b.txt", [&](std::ostream &out) {
     out << block;
     throw std::runtime_error("the writer's own failure");

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <signorini/output/checkpoint_manifest.h>
+
 #include <mpi.h>
 #include <optional>
 #include <string>
@@ -55,11 +57,13 @@ namespace signorini
      * The newest intact checkpoint in the directory, if any, on every
      * process: its cycle, with its state available from state(). Every
      * piece is checked against its size and checksum before anything reads
-     * it. A newer checkpoint that is incomplete or damaged is skipped with a
-     * warning line on standard error naming the file and what is wrong. If
-     * there are checkpoints and none is intact, throws an InputError naming
-     * the newest one's fault; also if the intact one was written by a
-     * different parameter set (naming the first entry that differs).
+     * it. A newer checkpoint without its state file (a run stopped while
+     * writing it) is passed over with a line on standard output; one that is
+     * damaged or truncated with a warning line on standard error naming the
+     * file and what is wrong. If none is intact and one is damaged, throws
+     * an InputError naming the newest fault; also if the intact one was
+     * written by a different parameter set (naming the first entry that
+     * differs).
      */
     std::optional<unsigned int>
     find_latest();
@@ -83,9 +87,10 @@ namespace signorini
 
     /**
      * Completes the checkpoint of cycle @p cycle, whose mesh the caller has
-     * saved: process 0 writes the state file whole, then every other
+     * saved: every process reads a slice of each mesh piece for its
+     * checksum, process 0 writes the state file whole, then every other
      * checkpoint is removed. Collective; throws std::runtime_error on every
-     * process if writing fails on one.
+     * process if reading or writing fails on one.
      */
     void
     write_state(const unsigned int cycle, const std::string &state) const;
@@ -106,6 +111,13 @@ namespace signorini
     /** The names of the mesh pieces of cycle @p cycle in the directory. */
     std::vector<std::string>
     mesh_pieces(const unsigned int cycle) const;
+
+    /** Writes the state file of cycle @p cycle with the checksums of its
+     * @p pieces, then removes every other checkpoint. */
+    void
+    write_manifest(const unsigned int                            cycle,
+                   const std::string                            &state,
+                   const std::vector<CheckpointManifest::Piece> &pieces) const;
 
     const std::string directory;
     const std::string parameter_text;

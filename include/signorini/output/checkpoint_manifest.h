@@ -20,6 +20,18 @@ namespace signorini
   FileChecksum
   checksum_of_file(const std::string &path);
 
+  /** The checksum of @p length bytes of the file @p path from @p offset on
+   * (fewer if the file ends before); throws as checksum_of_file(). */
+  FileChecksum
+  checksum_of_file(const std::string  &path,
+                   const std::uint64_t offset,
+                   const std::uint64_t length);
+
+  /** The checksum of the bytes of @p first followed by those of
+   * @p second. */
+  FileChecksum
+  concatenate(const FileChecksum &first, const FileChecksum &second);
+
   /**
    * The text of a checkpoint's state file, which is also its manifest:
    * written last and whole, it lists every other piece of the checkpoint
