@@ -1,6 +1,7 @@
 # interrupt.sh on two processes. SIGTERM to mpirun, which forwards it to
 # both processes (after a SIGCONT and a second's wait, and kills them a
-# second later); SIGINT to both processes, as a terminal's Ctrl-C sends it.
+# second later); SIGINT to both processes themselves (as a batch system
+# signals every task).
 # The processes agree on where to stop: one line, the files end at the same
 # cycle, --resume on two processes gives the uninterrupted run's results.
 # Then a checkpoint damaged under mpirun: one line on two processes.
