@@ -44,9 +44,10 @@ last_cycle() {
   tail -n 1 "$1/statistics.csv" | cut -d, -f1
 }
 
-# same_statistics A B: whether two statistics.csv files agree to 1e-8.
+# same_statistics A B [ABSOLUTE]: whether two statistics.csv files agree to
+# 1e-8 relative or ABSOLUTE (1e-8 unless given).
 same_statistics() {
-  numdiff -q -a 1e-8 -r 1e-8 -s ' \t\n,' "$1" "$2" > /dev/null && echo yes || echo no
+  numdiff -q -a "${3:-1e-8}" -r 1e-8 -s ' \t\n,' "$1" "$2" > /dev/null && echo yes || echo no
 }
 
 # wait_for FILE: waits until FILE exists (at most two minutes).
