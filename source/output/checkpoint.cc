@@ -3,9 +3,9 @@
 
 #include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
+#include <signorini/output/atomic_file.h>
 #include <signorini/output/checkpoint.h>
 #include <signorini/output/checkpoint_manifest.h>
-#include <signorini/output/file_output.h>
 #include <signorini/output/output_series.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <signorini/input/input_error.h>
-#include <signorini/output/file_output.h>
+#include <signorini/output/atomic_file.h>
 #include <signorini/output/output_series.h>
 #include <signorini/problem/contact_problem.h>
 
