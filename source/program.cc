@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/base/failures.h>
+#include <signorini/base/interruption.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parameter_file.h>
 #include <signorini/input/parameters.h>
@@ -298,6 +299,11 @@ namespace signorini
                             ": ")
             << std::endl;
         return exit_status::input_error;
+      }
+    catch (const Interrupted &stop)
+      {
+        err << "signorini: " << stop.message(file) << std::endl;
+        return stop.status();
       }
     catch (const SolverFailure &failure)
       {
