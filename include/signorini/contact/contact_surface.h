@@ -1,6 +1,7 @@
 #ifndef signorini_contact_contact_surface_h
 #define signorini_contact_contact_surface_h
 
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
@@ -18,18 +19,23 @@
 namespace signorini
 {
   /**
-   * A vertex of the candidate contact boundary whose displacement along the
-   * obstacle's normal is free (not fixed by a Dirichlet condition or a
-   * hanging node).
+   * A vertex of the candidate contact boundary facing one obstacle, along
+   * whose normal it may move (its displacement along the normal is not all
+   * fixed by Dirichlet conditions or hanging nodes). A vertex that may
+   * touch several obstacles at once (the bottom of a groove) is several
+   * contact nodes with the same dofs, one per obstacle: a corner.
    */
   template <int dim>
   struct ContactNode
   {
     /** Displacement dofs, one per component. */
     std::array<dealii::types::global_dof_index, dim> dofs;
+    /** Which of them are free (not fixed by a Dirichlet condition). */
+    std::array<bool, dim> free;
     /** The dof that carries the node's scalars (contact pressure, active
-     * flag) in vectors of the displacement's layout: the component along
-     * which the normal is largest. */
+     * flag) in vectors of the displacement's layout: a free component,
+     * the one along which the normal is largest; at a corner each node has
+     * its own. */
     dealii::types::global_dof_index scalar_dof;
     /** Where the node is [mm]. */
     dealii::Point<dim> position;
@@ -37,7 +43,7 @@ namespace signorini
     dealii::Tensor<1, dim> normal;
     /** Initial gap to the obstacle along the normal [mm]. */
     double gap;
-    /** Which obstacle the node faces. */
+    /** Which obstacle the node faces (its index in the ObstacleSet). */
     unsigned int obstacle = 0;
     /** Lumped contact-boundary mass, integral of the shape function over
      * the contact boundary [mm^(dim-1)]; set on owned nodes only. */
@@ -45,6 +51,12 @@ namespace signorini
     bool   owned;
     /** In the contact strategy's active set. */
     bool active = false;
+    /** Whether this is the vertex's first node (its nearest obstacle):
+     * quantities of the vertex (its nodal force) count there once. */
+    bool primary = true;
+    /** The corner the node belongs to (an index into
+     * ContactSurface::corners()), or invalid_unsigned_int. */
+    unsigned int corner = dealii::numbers::invalid_unsigned_int;
 
     /** n.u at the node, for the displacement @p u [mm]. */
     double
@@ -59,8 +71,10 @@ namespace signorini
 
   /**
    * The candidate contact nodes of the current mesh: the vertices on the
-   * contact boundary ids that face an obstacle, each with its normal, gap
-   * and lumped mass, and the active set of the contact strategy.
+   * contact boundary ids, each facing the obstacle nearest to it (smallest
+   * gap) and, as a corner, up to dim obstacles whose normals are
+   * independent on its free components; each node with its normal, gap and
+   * lumped mass, and the active set of the contact strategy.
    */
   template <int dim>
   class ContactSurface
@@ -68,11 +82,16 @@ namespace signorini
   public:
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
+    /** @p check_input: setup() refuses a body that starts inside an
+     * obstacle, a support that holds a node inside one, and contact
+     * boundary ids where no node can act (off for Contact/Method = none). */
     ContactSurface(const std::set<dealii::types::boundary_id> &contact_ids,
-                   const Obstacle<dim>                        &obstacle);
+                   const ObstacleSet<dim>                     &obstacles,
+                   const bool check_input = true);
 
     /** Finds the nodes of @p discretisation's current mesh. Throws
-     * InputError if a gap is not a finite number. */
+     * InputError if a gap is not a finite number, and for the input that
+     * the constructor's @p check_input names. */
     void
     setup(const Discretisation<dim> &discretisation);
 
@@ -81,6 +100,15 @@ namespace signorini
     const std::vector<ContactNode<dim>> &
     nodes() const;
 
+    /** The nodes of each vertex that faces more than one obstacle, the
+     * primary one first. */
+    const std::vector<std::vector<unsigned int>> &
+    corners() const;
+
+    /** The obstacles. */
+    const ObstacleSet<dim> &
+    obstacles() const;
+
     /** The boundary ids that may touch an obstacle. */
     const std::set<dealii::types::boundary_id> &
     contact_ids() const;
@@ -88,6 +116,13 @@ namespace signorini
     /** The gap of @p node after the displacement @p u [mm]. */
     double
     deformed_gap(const ContactNode<dim> &node, const VectorType &u) const;
+
+    /** The obstacles' normal forces lambda_i [N] at the owned nodes (0
+     * elsewhere) from the nodal forces @p residual = K u - f: on the free
+     * components of each vertex, residual = sum of lambda_i n_i over its
+     * nodes (least squares at a corner). */
+    std::vector<double>
+    normal_forces(const VectorType &residual) const;
 
     /** Gaps below this count as touching: round-off in the body's size
      * [mm]. */
@@ -101,10 +136,12 @@ namespace signorini
 
   private:
     const std::set<dealii::types::boundary_id> ids;
-    const Obstacle<dim>                       &obstacle;
+    const ObstacleSet<dim>                    &obstacle_set;
+    const bool                                 check_input;
     MPI_Comm                                   mpi_communicator;
     double                                     tolerance = 0.;
     std::vector<ContactNode<dim>>              contact_nodes;
+    std::vector<std::vector<unsigned int>>     corner_nodes;
   };
 } // namespace signorini
 

@@ -2,18 +2,30 @@
 #define signorini_contact_obstacle_h
 
 #include <deal.II/base/bounding_box.h>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/parsed_function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <signorini/contact/obstacle_parameters.h>
+
 #include <memory>
 #include <ostream>
-#include <set>
 #include <string>
+#include <vector>
 
 namespace signorini
 {
+  /**
+   * A surface for ParaView: points and the cells between them, segments
+   * (2 points) in 2D, triangles or quadrilaterals (3 or 4 points, in VTK's
+   * order) in 3D.
+   */
+  template <int dim>
+  struct SurfaceMesh
+  {
+    std::vector<dealii::Point<dim>>        points;
+    std::vector<std::vector<unsigned int>> cells;
+  };
+
   /**
    * A rigid obstacle: for a point of the body, how far it is from the
    * obstacle's surface and in which direction the surface faces it.
@@ -35,42 +47,127 @@ namespace signorini
     gap(const dealii::Point<dim> &point,
         dealii::Tensor<1, dim>   &normal) const = 0;
 
-    /** The parameter entry that describes the obstacle, for messages. */
+    /** The parameter entry that describes the obstacle, for messages
+     * ("Obstacle 2/Center"). */
     virtual std::string
     entry() const = 0;
 
-    /** Writes the obstacle's surface around @p box (the body's bounding box)
-     * as a VTU mesh for ParaView. */
+    /** The obstacle's surface around @p box (the body's bounding box), for
+     * ParaView. */
+    virtual SurfaceMesh<dim>
+    surface(const dealii::BoundingBox<dim> &box) const = 0;
+
+    /** Writes surface(@p box) as a VTU file. */
     virtual void
-    write_vtu(std::ostream &out, const dealii::BoundingBox<dim> &box) const = 0;
+    write_vtu(std::ostream &out, const dealii::BoundingBox<dim> &box) const;
   };
 
   /**
-   * The rigid obstacle and where it may touch the body: subsection
-   * `Obstacle`. Its surface is the graph of a height function, y = psi(x)
-   * in 2D and z = psi(x, y) in 3D (HeightObstacle); only the boundary ids in
-   * `Contact boundary ids` may touch it.
+   * Writes the surfaces @p meshes as one VTU file (zlib-compressed, each
+   * cell with points of its own), with the point field `obstacle` holding
+   * each surface's entry of @p numbers.
    */
   template <int dim>
-  struct ObstacleParameters
+  void
+  write_surfaces_vtu(std::ostream                        &out,
+                     const std::vector<SurfaceMesh<dim>> &meshes,
+                     const std::vector<unsigned int>     &numbers);
+
+  /**
+   * The rigid obstacles of a scene, each moved by its displacement and
+   * known by its number (N of its subsection `Obstacle N`; 1 for
+   * `Obstacle`). As one Obstacle, the gap of a point is its gap to the
+   * nearest obstacle (the smallest), with that obstacle's normal.
+   */
+  template <int dim>
+  class ObstacleSet : public Obstacle<dim>
   {
-    /** The expression of psi [mm] of x (2D) or x, y (3D). */
-    std::string height_expression = "0";
-    /** psi, parsed. */
-    std::unique_ptr<dealii::FunctionParser<dim - 1>> height;
-    std::set<dealii::types::boundary_id>             contact_ids = {2};
-
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-
+  public:
+    /** Adds @p obstacle, moved by @p displacement [mm], as number
+     * @p number; @p may_start_inside: the body may start inside it. */
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    add(std::unique_ptr<Obstacle<dim>> obstacle,
+        const dealii::Tensor<1, dim>  &displacement     = {},
+        const unsigned int             number           = 0,
+        const bool                     may_start_inside = true);
+
+    unsigned int
+    size() const;
+
+    /** The number of obstacle @p k (1 for the first subsection). */
+    unsigned int
+    number(const unsigned int k) const;
+
+    /** The gap of @p point to obstacle @p k where it is (moved) and its
+     * normal there. */
+    double
+    gap(const unsigned int        k,
+        const dealii::Point<dim> &point,
+        dealii::Tensor<1, dim>   &normal) const;
+
+    /** The gap of @p point to obstacle @p k before its displacement. */
+    double
+    initial_gap(const unsigned int k, const dealii::Point<dim> &point) const;
+
+    /** Whether the body may start inside obstacle @p k. */
+    bool
+    may_start_inside(const unsigned int k) const;
+
+    /** Whether the scene has one obstacle, a height (whose statistics keep
+     * their original columns). */
+    bool
+    single_height() const;
+
+    /** Obstacle @p k, not moved. */
+    const Obstacle<dim> &
+    operator[](const unsigned int k) const;
+
+    /** The obstacle nearest to @p point (smallest gap; the first of
+     * equals). */
+    unsigned int
+    nearest(const dealii::Point<dim> &point) const;
+
+    /** The gap to the nearest obstacle and its normal. */
+    double
+    gap(const dealii::Point<dim> &point,
+        dealii::Tensor<1, dim>   &normal) const override;
+
+    /** The entries of the obstacles, joined by ", ". */
+    std::string
+    entry() const override;
+
+    /** All obstacles' surfaces, where they are. */
+    SurfaceMesh<dim>
+    surface(const dealii::BoundingBox<dim> &box) const override;
+
+    /** The obstacles' surfaces in one VTU file, with their numbers as the
+     * point field `obstacle`. */
+    void
+    write_vtu(std::ostream                   &out,
+              const dealii::BoundingBox<dim> &box) const override;
+
+  private:
+    /** Obstacle @p k's surface, moved. */
+    SurfaceMesh<dim>
+    moved_surface(const unsigned int              k,
+                  const dealii::BoundingBox<dim> &box) const;
+
+    std::vector<std::unique_ptr<Obstacle<dim>>> obstacles;
+    std::vector<dealii::Tensor<1, dim>>         displacements;
+    std::vector<unsigned int>                   numbers;
+    std::vector<bool>                           may_start_inside_flags;
   };
 
-  /** The obstacle that @p parameters describe. */
+  /** The obstacles of @p parameters. Throws InputError. */
+  template <int dim>
+  std::unique_ptr<ObstacleSet<dim>>
+  create_obstacles(const ObstacleParameters<dim> &parameters);
+
+  /** The obstacle that @p description describes (one kind). Throws
+   * InputError, e.g. for a geometry file that cannot be read. */
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
-  create_obstacle(const ObstacleParameters<dim> &parameters);
+  create_obstacle(const ObstacleDescription<dim> &description);
 } // namespace signorini
 
 #endif

@@ -112,7 +112,7 @@ namespace signorini
     Discretisation<dim>                   discretisation;
     Loads<dim>                            loads;
     std::unique_ptr<ElasticOperator<dim>> elastic_operator;
-    std::unique_ptr<Obstacle<dim>>        obstacle;
+    std::unique_ptr<ObstacleSet<dim>>     obstacle;
     ContactSurface<dim>                   contact_surface;
     std::unique_ptr<ContactStrategy<dim>> strategy;
 
