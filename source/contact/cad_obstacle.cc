@@ -29,6 +29,7 @@
 #include <cmath>
 #include <filesystem>
 #include <gmsh.h>
+#include <iostream>
 #include <limits>
 #include <mutex>
 #include <unistd.h>
@@ -68,7 +69,12 @@ namespace signorini
         {
           std::error_code ignored;
           std::filesystem::remove(brep, ignored);
-          throw InputError(entry, "Gmsh cannot read '" + geo + "': " + errors);
+          throw InputError(entry,
+                           "Gmsh cannot read '" + geo + "': " + errors +
+                             (errors.find("OpenCASCADE") != std::string::npos ?
+                                " (does the .geo begin with "
+                                "SetFactory(\"OpenCASCADE\")?)" :
+                                ""));
         }
       return brep.string();
     }
@@ -82,12 +88,28 @@ namespace signorini
       return extension;
     }
 
+    /** Standard output silenced while it lives: OpenCASCADE's readers
+     * print their progress and complaints there. */
+    struct QuietStandardOutput
+    {
+      QuietStandardOutput()
+        : saved(std::cout.rdbuf(nullptr))
+      {
+      }
+      ~QuietStandardOutput()
+      {
+        std::cout.rdbuf(saved);
+      }
+      std::streambuf *saved;
+    };
+
     /** The shape in @p file (.step/.stp, .brep/.brp, .geo). */
     TopoDS_Shape
     read_shape(const std::string &file, const std::string &entry)
     {
-      const std::string extension = lower_case_extension(file);
-      TopoDS_Shape      shape;
+      const QuietStandardOutput quiet;
+      const std::string         extension = lower_case_extension(file);
+      TopoDS_Shape              shape;
       if (extension == ".step" || extension == ".stp")
         {
           STEPControl_Reader reader;

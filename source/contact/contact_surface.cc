@@ -339,7 +339,8 @@ namespace signorini
     // Lumped contact-boundary mass: the integral of each shape function over
     // the contact boundary, condensed onto the free nodes; with several
     // obstacles, a node's over the part of the boundary that faces its
-    // obstacle (the quadrature points nearest to it).
+    // obstacle (the quadrature points whose normal faces it most
+    // squarely).
     const auto                 &fe = discretisation.fe();
     const unsigned int          n  = fe.n_dofs_per_cell();
     std::vector<VectorType>     mass(n_obstacles,
@@ -349,7 +350,8 @@ namespace signorini
                                      discretisation.face_quadrature(),
                                      update_values | update_JxW_values |
                                        (n_obstacles > 1 ?
-                                                    update_quadrature_points :
+                                                    update_quadrature_points |
+                                            update_normal_vectors :
                                                     update_default));
     std::vector<Vector<double>> cell_mass(n_obstacles, Vector<double>(n));
     std::vector<types::global_dof_index> dof_indices(n);
@@ -377,8 +379,9 @@ namespace signorini
                   for (const unsigned int q :
                        fe_face_values.quadrature_point_indices())
                     {
-                      const unsigned int k = obstacle_set.nearest(
-                        fe_face_values.quadrature_point(q));
+                      const unsigned int k =
+                        obstacle_set.facing(fe_face_values.quadrature_point(q),
+                                            fe_face_values.normal_vector(q));
                       for (unsigned int i = 0; i < n; ++i)
                         cell_mass[k](i) += fe_face_values.shape_value(i, q) *
                                            fe_face_values.JxW(q);

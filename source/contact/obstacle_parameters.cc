@@ -1,3 +1,4 @@
+#include <signorini/contact/cad_obstacle.h>
 #include <signorini/contact/obstacle_parameters.h>
 #include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
@@ -286,6 +287,10 @@ namespace signorini
           if (!std::ifstream(d.geometry_file))
             throw InputError(d.entry("Geometry file"),
                              "cannot open '" + d.geometry_file + "'");
+          // Read now, so that a file OpenCASCADE cannot read is bad input.
+          CadObstacle<dim>(d.geometry_file,
+                           body_sides.value(prm.get("Body"), d.entry("Body")),
+                           d.entry("Geometry file"));
         }
       if (prm.get("Displacement") != defaults.at("Displacement"))
         d.displacement =
@@ -371,6 +376,10 @@ namespace signorini
         if (description.type != ObstacleDescription<dim>::Type::none)
           obstacles.push_back(std::move(description));
       }
+    if (obstacles.empty())
+      throw InputError("Obstacle/Type",
+                       "is none, and so are the other obstacles: there is "
+                       "no obstacle");
   }
 
   template struct ObstacleDescription<2>;

@@ -1,6 +1,5 @@
 #include <signorini/contact/height_obstacle.h>
 #include <signorini/contact/obstacle.h>
-#include <signorini/input/input_error.h>
 
 #include <limits>
 
@@ -98,6 +97,29 @@ namespace signorini
   }
 
   template <int dim>
+  unsigned int
+  ObstacleSet<dim>::facing(const Point<dim>     &point,
+                           const Tensor<1, dim> &boundary_normal) const
+  {
+    unsigned int best           = 0;
+    double       best_alignment = 0., best_gap = 0.;
+    for (unsigned int k = 0; k < obstacles.size(); ++k)
+      {
+        Tensor<1, dim> normal;
+        const double   g         = gap(k, point, normal);
+        const double   alignment = -(boundary_normal * normal);
+        if (k == 0 || alignment > best_alignment + 1e-12 ||
+            (alignment > best_alignment - 1e-12 && g < best_gap))
+          {
+            best           = k;
+            best_alignment = alignment;
+            best_gap       = g;
+          }
+      }
+    return best;
+  }
+
+  template <int dim>
   double
   ObstacleSet<dim>::gap(const Point<dim> &point, Tensor<1, dim> &normal) const
   {
@@ -176,8 +198,6 @@ namespace signorini
   std::unique_ptr<ObstacleSet<dim>>
   create_obstacles(const ObstacleParameters<dim> &parameters)
   {
-    if (parameters.obstacles.empty())
-      throw InputError("Obstacle/Type", "there is no obstacle");
     auto set = std::make_unique<ObstacleSet<dim>>();
     for (const auto &description : parameters.obstacles)
       set->add(create_obstacle(description),

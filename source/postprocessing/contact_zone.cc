@@ -118,17 +118,20 @@ namespace signorini
       discretisation.simplex() && dim == 3 ?
         Quadrature<dim - 1>(QGaussSimplex<dim - 1>(4)) :
         Quadrature<dim - 1>(QGauss<dim - 1>(6));
-    const auto        &fe          = discretisation.fe();
-    const auto        &constraints = discretisation.constraints();
-    FEFaceValues<dim>  fe_face_values(discretisation.mapping(),
-                                     fe,
-                                     rule,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
+    const auto       &fe          = discretisation.fe();
+    const auto       &constraints = discretisation.constraints();
+    FEFaceValues<dim> fe_face_values(
+      discretisation.mapping(),
+      fe,
+      rule,
+      update_values | update_quadrature_points | update_JxW_values |
+        (n_obstacles > 1 ? update_normal_vectors : update_default));
+    const unsigned int                   n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dof_indices(n);
     std::vector<std::vector<double>> nodal(n_obstacles, std::vector<double>(n)),
       indicator(n_obstacles, std::vector<double>(n));
+    std::vector<std::vector<Tensor<1, dim>>> nodal_force(
+      n_obstacles, std::vector<Tensor<1, dim>>(n));
     // Obstacle k's pressure (or active indicator) at dof i.
     const auto own_value = [&](const types::global_dof_index i,
                                const unsigned int            k,
@@ -155,8 +158,32 @@ namespace signorini
       return value;
     };
 
+    // Obstacle k's pressure times its normal at dof i: interpolated, the
+    // force density whose integral is the nodal forces' sum.
+    const auto own_normal = [&](const types::global_dof_index i,
+                                const unsigned int            k) {
+      const auto at = node_at.find(i);
+      if (at == node_at.end() || nodes[at->second].obstacle != k)
+        return Tensor<1, dim>();
+      return nodes[at->second].normal;
+    };
+    const auto nodal_force_density = [&](const types::global_dof_index i,
+                                         const unsigned int            k) {
+      const auto own_pressure = [&](const types::global_dof_index j) {
+        return n_obstacles == 1 ? static_cast<double>(pressure(j)) :
+                                  own_value(j, k, false);
+      };
+      if (!constraints.is_constrained(i))
+        return own_pressure(i) * own_normal(i, k);
+      Tensor<1, dim> value;
+      if (const auto *entries = constraints.get_constraint_entries(i))
+        for (const auto &[master, weight] : *entries)
+          value += weight * (own_pressure(master) * own_normal(master, k));
+      return value;
+    };
+
     double              integral = 0., error_squared = 0., norm_squared = 0.;
-    Tensor<1, dim>      resultant, normal;
+    Tensor<1, dim>      resultant;
     std::vector<double> area(n_obstacles, 0.);
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
@@ -170,27 +197,32 @@ namespace signorini
               for (unsigned int k = 0; k < n_obstacles; ++k)
                 for (unsigned int i = 0; i < n; ++i)
                   {
-                    nodal[k][i]     = nodal_value(dof_indices[i], k, false);
-                    indicator[k][i] = nodal_value(dof_indices[i], k, true);
+                    nodal[k][i]       = nodal_value(dof_indices[i], k, false);
+                    indicator[k][i]   = nodal_value(dof_indices[i], k, true);
+                    nodal_force[k][i] = nodal_force_density(dof_indices[i], k);
                   }
               for (const unsigned int q :
                    fe_face_values.quadrature_point_indices())
                 {
                   const double JxW = fe_face_values.JxW(q);
                   const auto  &x   = fe_face_values.quadrature_point(q);
-                  // The point belongs to the obstacle nearest to it.
+                  // The point belongs to the obstacle it faces.
                   const unsigned int k =
-                    n_obstacles == 1 ? 0 : obstacles.nearest(x);
-                  double p_h = 0., active_h = 0.;
+                    n_obstacles == 1 ?
+                      0 :
+                      obstacles.facing(x, fe_face_values.normal_vector(q));
+                  double         p_h = 0., active_h = 0.;
+                  Tensor<1, dim> force_h;
                   for (unsigned int i = 0; i < n; ++i)
                     {
                       p_h += nodal[k][i] * fe_face_values.shape_value(i, q);
                       active_h +=
                         indicator[k][i] * fe_face_values.shape_value(i, q);
+                      force_h +=
+                        nodal_force[k][i] * fe_face_values.shape_value(i, q);
                     }
                   integral += p_h * JxW;
-                  obstacles.gap(k, x, normal);
-                  resultant += p_h * JxW * normal;
+                  resultant += force_h * JxW;
                   area[k] += active_h * JxW;
                   if (exact)
                     {

@@ -127,6 +127,14 @@ namespace signorini
     unsigned int
     nearest(const dealii::Point<dim> &point) const;
 
+    /** The obstacle that a boundary point @p point with outward normal
+     * @p boundary_normal faces most squarely: the largest -n.n_k (the
+     * nearest of equals). The part of the boundary that an obstacle acts
+     * on. */
+    unsigned int
+    facing(const dealii::Point<dim>     &point,
+           const dealii::Tensor<1, dim> &boundary_normal) const;
+
     /** The gap to the nearest obstacle and its normal. */
     double
     gap(const dealii::Point<dim> &point,

@@ -45,8 +45,8 @@ namespace signorini
     double contact_area = 0.;
     /** Integral of the contact pressure over the contact boundary [N]. */
     double integrated_pressure = 0.;
-    /** Integral of the contact pressure times the obstacles' normal: the
-     * force of the obstacles on the body [N]. */
+    /** Integral of the interpolated nodal pressure times normal: the force
+     * of the obstacles on the body [N], the sum of the nodal forces. */
     dealii::Tensor<1, dim> pressure_resultant;
     /** Relative L2 error of the pressure against Reference/Contact pressure
      * (NaN if none). */
