@@ -1,5 +1,5 @@
 #include <signorini/contact/height_obstacle.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 
 #include <limits>
 

@@ -13,7 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <signorini/contact/contact_surface.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/input/parameters.h>
 

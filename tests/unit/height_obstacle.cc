@@ -11,7 +11,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/contact/height_obstacle.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 
 #include <algorithm>
 #include <array>

@@ -13,7 +13,7 @@
 #include <signorini/contact/cad_obstacle.h>
 #include <signorini/contact/cylinder_obstacle.h>
 #include <signorini/contact/distance_obstacle.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/contact/plane_obstacle.h>
 #include <signorini/contact/sphere_obstacle.h>
 
@@ -52,19 +52,19 @@ namespace
   /** gap() of @p point against @p gap and @p normal, to @p tolerance. */
   template <int dim>
   void
-  check(const Obstacle<dim>    &obstacle,
-        const Point<dim>       &point,
-        const double            gap,
-        const Tensor<1, dim>   &normal,
-        const double            tolerance = 1e-14)
+  check(const Obstacle<dim>  &obstacle,
+        const Point<dim>     &point,
+        const double          gap,
+        const Tensor<1, dim> &normal,
+        const double          tolerance = 1e-14)
   {
     Tensor<1, dim> n;
     for (unsigned int d = 0; d < dim; ++d)
       n[d] = 7. + d; // overwritten by gap()
     const double g = obstacle.gap(point, n);
     std::cout << "  point " << text<dim>(point) << ": gap " << g
-              << ", expected " << gap << "; normal " << text(n)
-              << ", expected " << text(normal) << '\n';
+              << ", expected " << gap << "; normal " << text(n) << ", expected "
+              << text(normal) << '\n';
     report("|gap - expected|", std::abs(g - gap), tolerance);
     report("|normal - expected|", (n - normal).norm(), tolerance);
   }
@@ -153,11 +153,7 @@ namespace
     const CadObstacle<3> ball("ball.geo", false, "G");
     check<3>(ball, Point<3>(0, 0, 1), 1., Tensor<1, 3>({0., 0., 1.}), 1e-7);
     check<3>(ball, Point<3>(0, 2, -2), 0., Tensor<1, 3>({0., 1., 0.}), 1e-7);
-    check<3>(ball,
-             Point<3>(0, 1, -2),
-             -1.,
-             Tensor<1, 3>({0., 1., 0.}),
-             1e-7);
+    check<3>(ball, Point<3>(0, 1, -2), -1., Tensor<1, 3>({0., 1., 0.}), 1e-7);
   }
 
   void
@@ -181,9 +177,8 @@ namespace
     ObstacleParameters<2> parameters;
     parameters.parse_parameters(prm);
     const auto set = create_obstacles(parameters);
-    std::cout << "  " << set->size() << " obstacles, numbers "
-              << set->number(0) << ' ' << set->number(1) << ", entries "
-              << set->entry() << '\n';
+    std::cout << "  " << set->size() << " obstacles, numbers " << set->number(0)
+              << ' ' << set->number(1) << ", entries " << set->entry() << '\n';
     Tensor<1, 2> normal;
     const double gap = set->gap(1, Point<2>(0.5, 0.5), normal);
     std::cout << "  plate, moved: gap " << gap << ", normal " << text(normal)
@@ -193,9 +188,9 @@ namespace
     report("|initial gap - 0.5|",
            std::abs(set->initial_gap(1, Point<2>(0, 0.5)) - 0.5),
            1e-15);
-    std::cout << "  nearest to (0, 0.2): obstacle " << set->nearest(Point<2>(0, 0.2))
-              << ", to (0, 0.6): obstacle " << set->nearest(Point<2>(0, 0.6))
-              << '\n';
+    std::cout << "  nearest to (0, 0.2): obstacle "
+              << set->nearest(Point<2>(0, 0.2)) << ", to (0, 0.6): obstacle "
+              << set->nearest(Point<2>(0, 0.6)) << '\n';
     report("wrong nearest",
            (set->nearest(Point<2>(0, 0.2)) == 0 ? 0. : 1.) +
              (set->nearest(Point<2>(0, 0.6)) == 1 ? 0. : 1.),

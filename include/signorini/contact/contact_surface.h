@@ -7,7 +7,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
 
 #include <array>
