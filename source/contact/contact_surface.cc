@@ -1,9 +1,6 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
 
-#include <signorini/base/text.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/input/input_error.h>
 
@@ -21,37 +18,10 @@ namespace signorini
 
   namespace
   {
-    /** A vertex of the contact boundary and its gaps to every obstacle. */
-    template <int dim>
-    struct ContactVertex
-    {
-      std::array<types::global_dof_index, dim> dofs;
-      std::array<bool, dim>                    free;
-      Point<dim>                               position;
-      std::vector<double>                      gaps;
-      std::vector<Tensor<1, dim>>              normals;
-      std::set<types::boundary_id>             boundary_ids;
-    };
-
-    /** Below this, the free part of a normal is none: the node cannot move
-     * along it. */
-    constexpr double fixed_along_normal = 1e-8;
-
     /** A corner's normals must be this independent: the determinant of
      * their components along their nodes' scalar dofs (about the sine of
      * the angle between two unit normals). */
     constexpr double independent_normals = 0.1;
-
-    template <int dim>
-    double
-    free_norm(const Tensor<1, dim> &normal, const std::array<bool, dim> &free)
-    {
-      double sum = 0.;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (free[d])
-          sum += normal[d] * normal[d];
-      return std::sqrt(sum);
-    }
 
     /** The determinant of the m x m matrix a[i][j] = normals[i][columns[j]]
      * (m <= 3). */
@@ -65,32 +35,6 @@ namespace signorini
         for (unsigned int j = 0; j < columns.size(); ++j)
           a(i, j) = normals[i][columns[j]];
       return a.determinant();
-    }
-
-    /** The first message of any process (by rank), thrown as an InputError
-     * on all of them. */
-    void
-    throw_first_error(const std::optional<InputError> &error,
-                      const MPI_Comm                   comm)
-    {
-      const std::string local =
-        error ? error->entry + '\n' + error->what() : std::string();
-      for (const auto &message : Utilities::MPI::all_gather(comm, local))
-        if (!message.empty())
-          {
-            const auto split = message.find('\n');
-            throw InputError(message.substr(0, split),
-                             message.substr(split + 1));
-          }
-    }
-
-    template <int dim>
-    std::string
-    point_text(const Point<dim> &p)
-    {
-      std::ostringstream text;
-      text << '(' << p << ')';
-      return text.str();
     }
   } // namespace
 
@@ -107,6 +51,34 @@ namespace signorini
   }
 
   template <int dim>
+  double
+  ContactSurface<dim>::free_part(const Tensor<1, dim>        &normal,
+                                 const std::array<bool, dim> &free)
+  {
+    double sum = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (free[d])
+        sum += normal[d] * normal[d];
+    return std::sqrt(sum);
+  }
+
+  template <int dim>
+  void
+  ContactSurface<dim>::throw_first(const std::optional<InputError> &error,
+                                   const MPI_Comm                   comm)
+  {
+    // The first message of any process (by rank), on all of them.
+    const std::string local =
+      error ? error->entry + '\n' + error->what() : std::string();
+    for (const auto &message : Utilities::MPI::all_gather(comm, local))
+      if (!message.empty())
+        {
+          const auto split = message.find('\n');
+          throw InputError(message.substr(0, split), message.substr(split + 1));
+        }
+  }
+
+  template <int dim>
   void
   ContactSurface<dim>::setup(const Discretisation<dim> &discretisation)
   {
@@ -117,7 +89,7 @@ namespace signorini
     const unsigned int n_obstacles = obstacle_set.size();
 
     // The vertices of the contact boundary, each once, with their gaps.
-    std::vector<ContactVertex<dim>>                    vertices;
+    std::vector<Vertex>                                vertices;
     std::map<types::global_dof_index, unsigned int>    vertex_index;
     std::optional<std::pair<Point<dim>, unsigned int>> non_finite;
     for (const auto &cell :
@@ -132,7 +104,7 @@ namespace signorini
                                        vertices.size());
                 if (added)
                   {
-                    ContactVertex<dim> vertex;
+                    Vertex vertex;
                     vertex.position = face->vertex(v);
                     for (unsigned int d = 0; d < dim; ++d)
                       {
@@ -152,7 +124,7 @@ namespace signorini
                 // A gap that is not a number where a node can act on it.
                 for (unsigned int k = 0; k < n_obstacles; ++k)
                   if (!std::isfinite(vertex.gaps[k]) &&
-                      !(free_norm<dim>(vertex.normals[k], vertex.free) <
+                      !(free_part(vertex.normals[k], vertex.free) <
                         fixed_along_normal))
                     non_finite = {vertex.position, k};
               }
@@ -170,7 +142,7 @@ namespace signorini
                 return where.str();
               }() +
               ")");
-        throw_first_error(error, mpi_communicator);
+        throw_first(error, mpi_communicator);
       }
 
     // Each vertex faces its nearest obstacle that it can move towards, and
@@ -198,7 +170,7 @@ namespace signorini
             unsigned int          along = numbers::invalid_unsigned_int;
             if (columns.empty())
               {
-                if (free_norm<dim>(n, vertex.free) < fixed_along_normal)
+                if (free_part(n, vertex.free) < fixed_along_normal)
                   continue;
                 // The free component along which the normal is largest.
                 for (unsigned int d = 0; d < dim; ++d)
@@ -249,66 +221,7 @@ namespace signorini
       }
 
     if (check_input)
-      {
-        std::optional<InputError> error;
-        for (const auto &vertex : vertices)
-          for (unsigned int k = 0; k < n_obstacles && !error; ++k)
-            {
-              // The body inside an obstacle before it moves.
-              const double initial =
-                obstacle_set.initial_gap(k, vertex.position);
-              if (!obstacle_set.may_start_inside(k) && initial < -tolerance)
-                error = InputError(
-                  obstacle_set[k].entry(),
-                  "the body starts inside this obstacle: its contact node " +
-                    point_text(vertex.position) + " lies " + number(-initial) +
-                    " mm inside (place the obstacle outside the body, and "
-                    "press it in by its Displacement)");
-              // A support that holds a node inside an obstacle.
-              const auto &n = vertex.normals[k];
-              if (free_norm<dim>(n, vertex.free) >= fixed_along_normal)
-                continue;
-              double held_gap  = vertex.gaps[k];
-              bool   supported = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                if (n[d] != 0.)
-                  {
-                    const auto *entries =
-                      constraints.get_constraint_entries(vertex.dofs[d]);
-                    if (entries != nullptr && !entries->empty())
-                      supported = false; // a hanging node, not a support
-                    else
-                      held_gap +=
-                        n[d] * constraints.get_inhomogeneity(vertex.dofs[d]);
-                  }
-              if (!error && supported && held_gap < -tolerance)
-                error =
-                  InputError("Boundary conditions/Dirichlet",
-                             "holds the contact node " +
-                               point_text(vertex.position) + " " +
-                               number(-held_gap) + " mm inside the obstacle " +
-                               obstacle_set[k].entry() +
-                               ", along whose normal it cannot move");
-            }
-        throw_first_error(error, mpi_communicator);
-
-        // Contact boundary ids on which no node can touch an obstacle.
-        for (const auto id : ids)
-          {
-            unsigned int seen = 0;
-            for (const auto &vertex : vertices)
-              seen += vertex.boundary_ids.count(id);
-            seen = Utilities::MPI::sum(seen, mpi_communicator);
-            const unsigned int acting =
-              Utilities::MPI::sum(acting_vertices[id], mpi_communicator);
-            if (seen > 0 && acting == 0)
-              throw InputError(
-                "Obstacle/Contact boundary ids",
-                "no node of boundary id " + std::to_string(id) +
-                  " can touch an obstacle: Boundary conditions/Dirichlet "
-                  "fixes each along the obstacles' normals");
-          }
-      }
+      check_vertices(vertices, acting_vertices, constraints);
 
     // Sorted by scalar dof, the vertices' primary nodes first.
     const auto by_scalar_dof = [](const ContactNode<dim> &a,
@@ -336,68 +249,7 @@ namespace signorini
             }
       }
 
-    // Lumped contact-boundary mass: the integral of each shape function over
-    // the contact boundary, condensed onto the free nodes; with several
-    // obstacles, a node's over the part of the boundary that faces its
-    // obstacle (the quadrature points whose normal faces it most
-    // squarely).
-    const auto                 &fe = discretisation.fe();
-    const unsigned int          n  = fe.n_dofs_per_cell();
-    std::vector<VectorType>     mass(n_obstacles,
-                                 VectorType(owned_dofs, mpi_communicator));
-    FEFaceValues<dim>           fe_face_values(discretisation.mapping(),
-                                     fe,
-                                     discretisation.face_quadrature(),
-                                     update_values | update_JxW_values |
-                                       (n_obstacles > 1 ?
-                                                    update_quadrature_points |
-                                            update_normal_vectors :
-                                                    update_default));
-    std::vector<Vector<double>> cell_mass(n_obstacles, Vector<double>(n));
-    std::vector<types::global_dof_index> dof_indices(n);
-    for (const auto &cell :
-         discretisation.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()))
-            {
-              fe_face_values.reinit(cell, f);
-              if (n_obstacles == 1)
-                {
-                  cell_mass[0] = 0;
-                  for (unsigned int i = 0; i < n; ++i)
-                    for (const unsigned int q :
-                         fe_face_values.quadrature_point_indices())
-                      cell_mass[0](i) += fe_face_values.shape_value(i, q) *
-                                         fe_face_values.JxW(q);
-                }
-              else
-                {
-                  for (auto &m : cell_mass)
-                    m = 0;
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    {
-                      const unsigned int k =
-                        obstacle_set.facing(fe_face_values.quadrature_point(q),
-                                            fe_face_values.normal_vector(q));
-                      for (unsigned int i = 0; i < n; ++i)
-                        cell_mass[k](i) += fe_face_values.shape_value(i, q) *
-                                           fe_face_values.JxW(q);
-                    }
-                }
-              cell->get_dof_indices(dof_indices);
-              for (unsigned int k = 0; k < n_obstacles; ++k)
-                constraints.distribute_local_to_global(cell_mass[k],
-                                                       dof_indices,
-                                                       mass[k]);
-            }
-    for (auto &m : mass)
-      m.compress(VectorOperation::add);
-    for (auto &node : contact_nodes)
-      if (node.owned)
-        node.mass = mass[node.obstacle](node.scalar_dof);
+    compute_masses(discretisation);
   }
 
   template <int dim>

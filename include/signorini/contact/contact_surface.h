@@ -5,13 +5,17 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
+#include <signorini/input/input_error.h>
 
 #include <array>
 #include <cstddef>
+#include <map>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -135,6 +139,48 @@ namespace signorini
     active_set_signature() const;
 
   private:
+    /** A vertex of the contact boundary with its gap and normal to every
+     * obstacle. */
+    struct Vertex
+    {
+      std::array<dealii::types::global_dof_index, dim> dofs;
+      std::array<bool, dim>                            free;
+      dealii::Point<dim>                               position;
+      std::vector<double>                              gaps;
+      std::vector<dealii::Tensor<1, dim>>              normals;
+      std::set<dealii::types::boundary_id>             boundary_ids;
+    };
+
+    /** Below this, the free part of a unit normal is none: the node cannot
+     * move along it. */
+    static constexpr double fixed_along_normal = 1e-8;
+
+    /** The length of @p normal's part along the @p free components. */
+    static double
+    free_part(const dealii::Tensor<1, dim> &normal,
+              const std::array<bool, dim>  &free);
+
+    /** Throws @p error of the first process that has one (by rank) on
+     * every process. */
+    static void
+    throw_first(const std::optional<InputError> &error, const MPI_Comm comm);
+
+    /** The input the constructor's check_input names
+     * (contact_surface_checks.cc): a body inside an obstacle before it
+     * moves, a support that holds a node inside one, contact boundary ids
+     * with no node that can act (@p acting_vertices: per id, the vertices
+     * that face an obstacle). */
+    void
+    check_vertices(
+      const std::vector<Vertex>                                &vertices,
+      const std::map<dealii::types::boundary_id, unsigned int> &acting_vertices,
+      const dealii::AffineConstraints<double> &constraints) const;
+
+    /** The nodes' lumped contact-boundary masses
+     * (contact_surface_masses.cc). */
+    void
+    compute_masses(const Discretisation<dim> &discretisation);
+
     const std::set<dealii::types::boundary_id> ids;
     const ObstacleSet<dim>                    &obstacle_set;
     const bool                                 check_input;
