@@ -1,6 +1,5 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/vector.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <signorini/contact/contact_surface.h>
 #include <signorini/input/input_error.h>
@@ -8,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -15,28 +16,82 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** A corner's normals must be this independent: the determinant of
+     * their components along their nodes' scalar dofs (about the sine of
+     * the angle between two unit normals). */
+    constexpr double independent_normals = 0.1;
+
+    /** The determinant of the m x m matrix a[i][j] = normals[i][columns[j]]
+     * (m <= 3). */
+    template <int dim>
+    double
+    normal_determinant(const std::vector<Tensor<1, dim>> &normals,
+                       const std::vector<unsigned int>   &columns)
+    {
+      FullMatrix<double> a(normals.size(), normals.size());
+      for (unsigned int i = 0; i < normals.size(); ++i)
+        for (unsigned int j = 0; j < columns.size(); ++j)
+          a(i, j) = normals[i][columns[j]];
+      return a.determinant();
+    }
+  } // namespace
+
   template <int dim>
   ContactSurface<dim>::ContactSurface(
     const std::set<types::boundary_id> &contact_ids,
-    const Obstacle<dim>                &obstacle)
+    const ObstacleSet<dim>             &obstacles,
+    const bool                          check_input)
     : ids(contact_ids)
-    , obstacle(obstacle)
+    , obstacle_set(obstacles)
+    , check_input(check_input)
     , mpi_communicator(MPI_COMM_SELF)
   {
+  }
+
+  template <int dim>
+  double
+  ContactSurface<dim>::free_part(const Tensor<1, dim>        &normal,
+                                 const std::array<bool, dim> &free)
+  {
+    double sum = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (free[d])
+        sum += normal[d] * normal[d];
+    return std::sqrt(sum);
+  }
+
+  template <int dim>
+  void
+  ContactSurface<dim>::throw_first(const std::optional<InputError> &error,
+                                   const MPI_Comm                   comm)
+  {
+    // The first message of any process (by rank), on all of them.
+    const std::string local =
+      error ? error->entry + '\n' + error->what() : std::string();
+    for (const auto &message : Utilities::MPI::all_gather(comm, local))
+      if (!message.empty())
+        {
+          const auto split = message.find('\n');
+          throw InputError(message.substr(0, split), message.substr(split + 1));
+        }
   }
 
   template <int dim>
   void
   ContactSurface<dim>::setup(const Discretisation<dim> &discretisation)
   {
-    mpi_communicator        = discretisation.mpi_communicator();
-    tolerance               = 1e-12 * discretisation.body_size();
-    const auto &constraints = discretisation.constraints();
-    const auto &owned_dofs  = discretisation.locally_owned_dofs();
+    mpi_communicator               = discretisation.mpi_communicator();
+    tolerance                      = 1e-12 * discretisation.body_size();
+    const auto        &constraints = discretisation.constraints();
+    const auto        &owned_dofs  = discretisation.locally_owned_dofs();
+    const unsigned int n_obstacles = obstacle_set.size();
 
-    contact_nodes.clear();
-    std::vector<std::pair<types::global_dof_index, ContactNode<dim>>> found;
-    std::optional<Point<dim>> non_finite;
+    // The vertices of the contact boundary, each once, with their gaps.
+    std::vector<Vertex>                                vertices;
+    std::map<types::global_dof_index, unsigned int>    vertex_index;
+    std::optional<std::pair<Point<dim>, unsigned int>> non_finite;
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
@@ -44,74 +99,157 @@ namespace signorini
           if (face->at_boundary() && ids.count(face->boundary_id()))
             for (const unsigned int v : face->vertex_indices())
               {
-                ContactNode<dim> node;
-                node.position      = face->vertex(v);
-                node.gap           = obstacle.gap(node.position, node.normal);
-                unsigned int along = 0;
-                for (unsigned int d = 0; d < dim; ++d)
+                const auto [at, added] =
+                  vertex_index.emplace(face->vertex_dof_index(v, 0),
+                                       vertices.size());
+                if (added)
                   {
-                    node.dofs[d] = face->vertex_dof_index(v, d);
-                    if (std::abs(node.normal[d]) >=
-                        std::abs(node.normal[along]))
-                      along = d;
+                    Vertex vertex;
+                    vertex.position = face->vertex(v);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      {
+                        vertex.dofs[d] = face->vertex_dof_index(v, d);
+                        vertex.free[d] =
+                          !constraints.is_constrained(vertex.dofs[d]);
+                      }
+                    vertex.gaps.resize(n_obstacles);
+                    vertex.normals.resize(n_obstacles);
+                    for (unsigned int k = 0; k < n_obstacles; ++k)
+                      vertex.gaps[k] =
+                        obstacle_set.gap(k, vertex.position, vertex.normals[k]);
+                    vertices.push_back(vertex);
                   }
-                node.scalar_dof = node.dofs[along];
-                if (constraints.is_constrained(node.scalar_dof))
-                  continue;
-                if (!std::isfinite(node.gap))
-                  non_finite = node.position;
-                node.owned = owned_dofs.is_element(node.scalar_dof);
-                found.emplace_back(node.scalar_dof, node);
+                auto &vertex = vertices[at->second];
+                vertex.boundary_ids.insert(face->boundary_id());
+                // A gap that is not a number where a node can act on it.
+                for (unsigned int k = 0; k < n_obstacles; ++k)
+                  if (!std::isfinite(vertex.gaps[k]) &&
+                      !(free_part(vertex.normals[k], vertex.free) <
+                        fixed_along_normal))
+                    non_finite = {vertex.position, k};
               }
     if (Utilities::MPI::max(non_finite ? 1U : 0U, mpi_communicator) > 0)
       {
-        std::ostringstream where;
+        std::optional<InputError> error;
         if (non_finite)
-          where << " at (" << *non_finite << ")";
-        throw InputError(obstacle.entry(),
-                         "is not a finite number on the contact boundary" +
-                           where.str());
+          error = InputError(
+            obstacle_set[non_finite->second].entry(),
+            "is not a finite number on the contact "
+            "boundary at (" +
+              [&]() {
+                std::ostringstream where;
+                where << non_finite->first;
+                return where.str();
+              }() +
+              ")");
+        throw_first(error, mpi_communicator);
       }
-    std::sort(found.begin(), found.end(), [](const auto &a, const auto &b) {
-      return a.first < b.first;
-    });
-    for (unsigned int i = 0; i < found.size(); ++i)
-      if (i == 0 || found[i].first != found[i - 1].first)
-        contact_nodes.push_back(found[i].second);
 
-    // Lumped contact-boundary mass: the integral of each shape function over
-    // the contact boundary, condensed onto the free nodes.
-    const auto       &fe = discretisation.fe();
-    VectorType        mass(owned_dofs, mpi_communicator);
-    FEFaceValues<dim> fe_face_values(discretisation.mapping(),
-                                     fe,
-                                     discretisation.face_quadrature(),
-                                     update_values | update_JxW_values);
-    Vector<double>    cell_mass(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &cell :
-         discretisation.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()))
+    // Each vertex faces its nearest obstacle that it can move towards, and
+    // those of the others whose normals are independent of the ones it
+    // faces already on its free components: one node each.
+    std::vector<ContactNode<dim>>              primary, secondary;
+    std::map<types::boundary_id, unsigned int> acting_vertices;
+    for (const auto &vertex : vertices)
+      {
+        std::vector<unsigned int> order(n_obstacles);
+        for (unsigned int k = 0; k < n_obstacles; ++k)
+          order[k] = k;
+        std::stable_sort(order.begin(),
+                         order.end(),
+                         [&](const unsigned int a, const unsigned int b) {
+                           return vertex.gaps[a] < vertex.gaps[b];
+                         });
+        std::vector<Tensor<1, dim>> normals;
+        std::vector<unsigned int>   columns;
+        for (const unsigned int k : order)
+          {
+            if (columns.size() == dim)
+              break;
+            const Tensor<1, dim> &n     = vertex.normals[k];
+            unsigned int          along = numbers::invalid_unsigned_int;
+            if (columns.empty())
+              {
+                if (free_part(n, vertex.free) < fixed_along_normal)
+                  continue;
+                // The free component along which the normal is largest.
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (vertex.free[d] &&
+                      (along == numbers::invalid_unsigned_int ||
+                       std::abs(n[d]) >= std::abs(n[along])))
+                    along = d;
+              }
+            else
+              {
+                double best = independent_normals;
+                auto   rows = normals;
+                rows.push_back(n);
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (vertex.free[d] &&
+                      std::find(columns.begin(), columns.end(), d) ==
+                        columns.end())
+                    {
+                      auto candidate = columns;
+                      candidate.push_back(d);
+                      const double det =
+                        std::abs(normal_determinant<dim>(rows, candidate));
+                      if (det >= best)
+                        {
+                          best  = det;
+                          along = d;
+                        }
+                    }
+                if (along == numbers::invalid_unsigned_int)
+                  continue;
+              }
+            ContactNode<dim> node;
+            node.dofs       = vertex.dofs;
+            node.free       = vertex.free;
+            node.scalar_dof = vertex.dofs[along];
+            node.position   = vertex.position;
+            node.normal     = n;
+            node.gap        = vertex.gaps[k];
+            node.obstacle   = k;
+            node.owned      = owned_dofs.is_element(node.scalar_dof);
+            node.primary    = columns.empty();
+            (node.primary ? primary : secondary).push_back(node);
+            normals.push_back(n);
+            columns.push_back(along);
+          }
+        for (const auto id : vertex.boundary_ids)
+          acting_vertices[id] += columns.empty() ? 0 : 1;
+      }
+
+    if (check_input)
+      check_vertices(vertices, acting_vertices, constraints);
+
+    // Sorted by scalar dof, the vertices' primary nodes first.
+    const auto by_scalar_dof = [](const ContactNode<dim> &a,
+                                  const ContactNode<dim> &b) {
+      return a.scalar_dof < b.scalar_dof;
+    };
+    std::sort(primary.begin(), primary.end(), by_scalar_dof);
+    std::sort(secondary.begin(), secondary.end(), by_scalar_dof);
+    contact_nodes = std::move(primary);
+    contact_nodes.insert(contact_nodes.end(),
+                         secondary.begin(),
+                         secondary.end());
+    corner_nodes.clear();
+    if (!secondary.empty())
+      {
+        std::map<types::global_dof_index, std::vector<unsigned int>> at_vertex;
+        for (unsigned int i = 0; i < contact_nodes.size(); ++i)
+          at_vertex[contact_nodes[i].dofs[0]].push_back(i);
+        for (const auto &[dof, indices] : at_vertex)
+          if (indices.size() > 1)
             {
-              fe_face_values.reinit(cell, f);
-              cell_mass = 0;
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                for (const unsigned int q :
-                     fe_face_values.quadrature_point_indices())
-                  cell_mass(i) +=
-                    fe_face_values.shape_value(i, q) * fe_face_values.JxW(q);
-              cell->get_dof_indices(dof_indices);
-              constraints.distribute_local_to_global(cell_mass,
-                                                     dof_indices,
-                                                     mass);
+              for (const unsigned int i : indices)
+                contact_nodes[i].corner = corner_nodes.size();
+              corner_nodes.push_back(indices);
             }
-    mass.compress(VectorOperation::add);
-    for (auto &node : contact_nodes)
-      if (node.owned)
-        node.mass = mass(node.scalar_dof);
+      }
+
+    compute_masses(discretisation);
   }
 
   template <int dim>
@@ -129,6 +267,20 @@ namespace signorini
   }
 
   template <int dim>
+  const std::vector<std::vector<unsigned int>> &
+  ContactSurface<dim>::corners() const
+  {
+    return corner_nodes;
+  }
+
+  template <int dim>
+  const ObstacleSet<dim> &
+  ContactSurface<dim>::obstacles() const
+  {
+    return obstacle_set;
+  }
+
+  template <int dim>
   const std::set<types::boundary_id> &
   ContactSurface<dim>::contact_ids() const
   {
@@ -141,6 +293,57 @@ namespace signorini
                                     const VectorType       &u) const
   {
     return node.normal_displacement(u) + node.gap;
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactSurface<dim>::normal_forces(const VectorType &residual) const
+  {
+    std::vector<double> lambda(contact_nodes.size(), 0.);
+    for (unsigned int i = 0; i < contact_nodes.size(); ++i)
+      {
+        const auto &node = contact_nodes[i];
+        if (!node.owned)
+          continue;
+        if (node.corner == numbers::invalid_unsigned_int)
+          {
+            // residual = lambda n on the free components.
+            double force = 0., length = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              if (node.free[d])
+                {
+                  force += node.normal[d] * residual(node.dofs[d]);
+                  length += node.normal[d] * node.normal[d];
+                }
+            lambda[i] = force / length;
+          }
+        else if (node.primary)
+          {
+            // residual = sum_j lambda_j n_j on the free components, in the
+            // least-squares sense: (N N^T) lambda = N residual.
+            const auto        &corner = corner_nodes[node.corner];
+            const unsigned int m      = corner.size();
+            FullMatrix<double> normal_matrix(m, m);
+            Vector<double>     right(m), solution(m);
+            for (unsigned int a = 0; a < m; ++a)
+              {
+                const auto &na = contact_nodes[corner[a]].normal;
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (node.free[d])
+                    {
+                      right(a) += na[d] * residual(node.dofs[d]);
+                      for (unsigned int b = 0; b < m; ++b)
+                        normal_matrix(a, b) +=
+                          na[d] * contact_nodes[corner[b]].normal[d];
+                    }
+              }
+            normal_matrix.gauss_jordan();
+            normal_matrix.vmult(solution, right);
+            for (unsigned int a = 0; a < m; ++a)
+              lambda[corner[a]] = solution(a);
+          }
+      }
+    return lambda;
   }
 
   template <int dim>

@@ -1,8 +1,3 @@
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_out.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/tria.h>
-
 #include <signorini/contact/height_obstacle.h>
 
 namespace signorini
@@ -10,8 +5,10 @@ namespace signorini
   using namespace dealii;
 
   template <int dim>
-  HeightObstacle<dim>::HeightObstacle(const Function<dim - 1> &height)
+  HeightObstacle<dim>::HeightObstacle(const Function<dim - 1> &height,
+                                      const std::string       &entry)
     : height(height)
+    , height_entry(entry)
   {
   }
 
@@ -39,34 +36,45 @@ namespace signorini
   std::string
   HeightObstacle<dim>::entry() const
   {
-    return "Obstacle/Height";
+    return height_entry;
   }
 
   template <int dim>
-  void
-  HeightObstacle<dim>::write_vtu(std::ostream           &out,
-                                 const BoundingBox<dim> &box) const
+  SurfaceMesh<dim>
+  HeightObstacle<dim>::surface(const BoundingBox<dim> &box) const
   {
-    Point<dim - 1>            lower, upper;
-    std::vector<unsigned int> subdivisions(dim - 1, dim == 2 ? 400 : 80);
+    const unsigned int n = dim == 2 ? 400 : 80;
+    Point<dim>         lower, step;
     for (unsigned int d = 0; d < dim - 1; ++d)
       {
         const double margin = 0.1 * box.side_length(d);
         lower[d]            = box.lower_bound(d) - margin;
-        upper[d]            = box.upper_bound(d) + margin;
+        step[d]             = (box.upper_bound(d) + margin - lower[d]) / n;
       }
-    Triangulation<dim - 1> flat;
-    GridGenerator::subdivided_hyper_rectangle(flat, subdivisions, lower, upper);
-    Triangulation<dim - 1, dim> surface;
-    GridGenerator::flatten_triangulation(flat, surface);
-    GridTools::transform(
-      [this](const Point<dim> &p) {
-        Point<dim> q = p;
-        q[dim - 1]   = height_at(p);
-        return q;
-      },
-      surface);
-    GridOut().write_vtu(surface, out);
+    // A grid of (n + 1)^(dim - 1) points on the graph.
+    SurfaceMesh<dim>   mesh;
+    const unsigned int n_rows = dim == 2 ? 1 : n + 1;
+    for (unsigned int j = 0; j < n_rows; ++j)
+      for (unsigned int i = 0; i <= n; ++i)
+        {
+          Point<dim> p;
+          p[0] = lower[0] + i * step[0];
+          if (dim == 3)
+            p[1] = lower[1] + j * step[1];
+          p[dim - 1] = height_at(p);
+          mesh.points.push_back(p);
+        }
+    if (dim == 2)
+      for (unsigned int i = 0; i < n; ++i)
+        mesh.cells.push_back({i, i + 1});
+    else
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int a = j * (n + 1) + i;
+            mesh.cells.push_back({a, a + 1, a + n + 2, a + n + 1});
+          }
+    return mesh;
   }
 
   template class HeightObstacle<2>;

@@ -133,30 +133,32 @@ namespace signorini
     TimerOutput::Scope t(timer, "Active set: contact forces");
     elastic_operator.residual(solution, contact_residual);
 
-    // The residual K u - f at a free contact node, along its normal, is the
-    // obstacle's nodal force lambda_i; the pressure is lambda_i / m_i. The
-    // nonlinear residual combines the force balance at all other free dofs
-    // with the strategy's complementarity function at the contact dofs.
+    // The residual K u - f at a contact node, on its free components, is
+    // the obstacle's nodal force lambda_i n_i (at a corner, the sum of its
+    // nodes' forces); the pressure is lambda_i / m_i. The nonlinear residual
+    // combines the force balance at all other free dofs with the strategy's
+    // complementarity function at the contact nodes.
     const MPI_Comm comm = discretisation.mpi_communicator();
     VectorType     owned_pressure(discretisation.locally_owned_dofs(), comm);
     VectorType     balance(contact_residual);
     double         complementarity = 0., contact_force = 0.;
-    const auto    &nodes = surface.nodes();
+    const auto    &nodes  = surface.nodes();
+    const auto     lambda = surface.normal_forces(contact_residual);
     for (unsigned int i = 0; i < nodes.size(); ++i)
       if (nodes[i].owned)
         {
           const auto  &node     = nodes[i];
-          const double lambda   = node.normal_displacement(contact_residual);
-          const double p        = node.mass > 0 ? lambda / node.mass : 0.;
+          const double p        = node.mass > 0 ? lambda[i] / node.mass : 0.;
           const double expected = strategy.complementarity_force(
-            i, node, lambda, p, surface.deformed_gap(node, solution));
+            i, node, lambda[i], p, surface.deformed_gap(node, solution));
           owned_pressure(node.scalar_dof) = p;
           // The force balance along the obstacle's surface remains.
           for (unsigned int d = 0; d < dim; ++d)
-            balance(node.dofs[d]) =
-              contact_residual(node.dofs[d]) - lambda * node.normal[d];
-          complementarity += (lambda - expected) * (lambda - expected);
-          contact_force += lambda * lambda;
+            if (node.free[d])
+              balance(node.dofs[d]) =
+                balance(node.dofs[d]) - lambda[i] * node.normal[d];
+          complementarity += (lambda[i] - expected) * (lambda[i] - expected);
+          contact_force += lambda[i] * lambda[i];
         }
     owned_pressure.compress(VectorOperation::insert);
     balance.compress(VectorOperation::insert);

@@ -1,8 +1,13 @@
+#include <signorini/contact/cad_obstacle.h>
+#include <signorini/contact/cylinder_obstacle.h>
+#include <signorini/contact/distance_obstacle.h>
 #include <signorini/contact/height_obstacle.h>
 #include <signorini/contact/obstacle.h>
-#include <signorini/input/entry_text.h>
-#include <signorini/input/input_error.h>
-#include <signorini/input/parsed_function.h>
+#include <signorini/contact/plane_obstacle.h>
+#include <signorini/contact/sphere_obstacle.h>
+#include <signorini/output/file_output.h>
+
+#include <stdexcept>
 
 namespace signorini
 {
@@ -10,49 +15,102 @@ namespace signorini
 
   template <int dim>
   void
-  ObstacleParameters<dim>::declare_parameters(ParameterHandler &prm)
+  Obstacle<dim>::write_vtu(std::ostream &out, const BoundingBox<dim> &box) const
   {
-    const ObstacleParameters<dim> defaults;
-    prm.enter_subsection("Obstacle");
-    prm.declare_entry("Height",
-                      defaults.height_expression,
-                      Patterns::Anything(),
-                      "Surface of the rigid obstacle [mm]: y = psi(x) in 2D, "
-                      "z = psi(x, y) in 3D, a muparser expression, e.g. "
-                      "'-0.15' (flat) or '-sqrt(4 - x^2)' (cylinder).");
-    prm.declare_entry("Contact boundary ids",
-                      entry_text::of(
-                        std::vector<unsigned int>(defaults.contact_ids.begin(),
-                                                  defaults.contact_ids.end())),
-                      Patterns::Anything(),
-                      "Boundary ids (','-separated) that may touch the "
-                      "obstacle.");
-    prm.leave_subsection();
+    write_surfaces_vtu<dim>(out, {surface(box)}, {1});
   }
 
   template <int dim>
   void
-  ObstacleParameters<dim>::parse_parameters(ParameterHandler &prm)
+  write_surfaces_vtu(std::ostream                        &out,
+                     const std::vector<SurfaceMesh<dim>> &meshes,
+                     const std::vector<unsigned int>     &numbers)
   {
-    prm.enter_subsection("Obstacle");
-    height_expression = prm.get("Height");
-    height = parse_function<dim - 1>(height_expression, 1, "Obstacle/Height");
-    contact_ids = parse::boundary_ids(prm.get("Contact boundary ids"),
-                                      "Obstacle/Contact boundary ids");
-    prm.leave_subsection();
+    // VTK's line, triangle and quadrilateral.
+    constexpr std::uint8_t line = 3, triangle = 5, quadrilateral = 9;
+    VtuPiece               piece;
+    piece.fields.push_back({"obstacle", 1, {}});
+    auto &number_field = piece.fields.back().values;
+    for (unsigned int m = 0; m < meshes.size(); ++m)
+      for (const auto &cell : meshes[m].cells)
+        {
+          // Each cell has points of its own.
+          for (const unsigned int v : cell)
+            {
+              const auto &p = meshes[m].points[v];
+              piece.connectivity.push_back(number_field.size());
+              for (unsigned int d = 0; d < 3; ++d)
+                piece.points.push_back(d < dim ? static_cast<float>(p[d]) :
+                                                 0.f);
+              number_field.push_back(static_cast<float>(numbers[m]));
+            }
+          piece.offsets.push_back(piece.connectivity.size());
+          switch (cell.size())
+            {
+              case 2:
+                piece.types.push_back(line);
+                break;
+              case 3:
+                piece.types.push_back(triangle);
+                break;
+              case 4:
+                piece.types.push_back(quadrilateral);
+                break;
+              default:
+                throw std::logic_error("a surface cell of " +
+                                       std::to_string(cell.size()) + " points");
+            }
+        }
+    write_vtu(out, piece, 1);
   }
 
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
-  create_obstacle(const ObstacleParameters<dim> &parameters)
+  create_obstacle(const ObstacleDescription<dim> &d)
   {
-    return std::make_unique<HeightObstacle<dim>>(*parameters.height);
+    using Type = typename ObstacleDescription<dim>::Type;
+    switch (d.type)
+      {
+        case Type::height:
+          return std::make_unique<HeightObstacle<dim>>(*d.height,
+                                                       d.entry("Height"));
+        case Type::plane:
+          return std::make_unique<PlaneObstacle<dim>>(d.point,
+                                                      d.normal,
+                                                      d.entry("Point"));
+        case Type::sphere:
+          return std::make_unique<SphereObstacle<dim>>(d.center,
+                                                       d.radius,
+                                                       d.body_inside,
+                                                       d.entry("Center"));
+        case Type::cylinder:
+          return std::make_unique<CylinderObstacle<dim>>(
+            d.center, d.axis, d.radius, d.body_inside, d.entry("Center"));
+        case Type::signed_distance:
+          return std::make_unique<DistanceObstacle<dim>>(
+            *d.distance, d.entry("Signed distance"));
+        case Type::geometry_file:
+          return std::make_unique<CadObstacle<dim>>(d.geometry_file,
+                                                    d.body_inside,
+                                                    d.entry("Geometry file"));
+        case Type::none:
+          break;
+      }
+    throw std::logic_error("an obstacle of no kind");
   }
 
-  template struct ObstacleParameters<2>;
-  template struct ObstacleParameters<3>;
+  template class Obstacle<2>;
+  template class Obstacle<3>;
+  template void
+  write_surfaces_vtu(std::ostream &,
+                     const std::vector<SurfaceMesh<2>> &,
+                     const std::vector<unsigned int> &);
+  template void
+  write_surfaces_vtu(std::ostream &,
+                     const std::vector<SurfaceMesh<3>> &,
+                     const std::vector<unsigned int> &);
   template std::unique_ptr<Obstacle<2>>
-  create_obstacle(const ObstacleParameters<2> &);
+  create_obstacle(const ObstacleDescription<2> &);
   template std::unique_ptr<Obstacle<3>>
-  create_obstacle(const ObstacleParameters<3> &);
+  create_obstacle(const ObstacleDescription<3> &);
 } // namespace signorini

@@ -126,24 +126,13 @@ namespace signorini
         linear_system_solver.matrix_changed(matrix_assembled &&
                                             linearisation.local_changes &&
                                             key.second == assembled_for.second);
-        // Held nodes sit on the obstacle: n.u = -gap, solved for the
-        // component along which n is largest.
+        // Held nodes sit on the obstacle: n.u = -gap.
         constraints.clear();
         constraints.reinit(discretisation.locally_relevant_dofs());
-        for (const auto *node : linearisation.held)
-          {
-            unsigned int along = 0;
-            while (node->dofs[along] != node->scalar_dof)
-              ++along;
-            const double n = node->normal[along];
-            constraints.add_line(node->scalar_dof);
-            for (unsigned int d = 0; d < dim; ++d)
-              if (d != along && node->normal[d] != 0.)
-                constraints.add_entry(node->scalar_dof,
-                                      node->dofs[d],
-                                      -node->normal[d] / n);
-            constraints.set_inhomogeneity(node->scalar_dof, -node->gap / n);
-          }
+        linearisation.add_held_constraints(constraints);
+        held_dofs.clear();
+        for (const auto &line : constraints.get_lines())
+          held_dofs.push_back(line.index);
         constraints.merge(discretisation.constraints(),
                           AffineConstraints<double>::left_object_wins);
         constraints.close();
@@ -159,7 +148,7 @@ namespace signorini
       {
         for (const auto &spring : linearisation.springs)
           for (unsigned int d = 0; d < dim; ++d)
-            if (spring.node->normal[d] != 0.)
+            if (spring.node->normal[d] != 0. && spring.node->free[d])
               system_rhs(spring.node->dofs[d]) +=
                 spring.extra_force * spring.node->normal[d];
         system_rhs.compress(VectorOperation::add);
@@ -196,21 +185,43 @@ namespace signorini
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     system_rhs += load_vector;
+    // The load at a dof that a held node's constraint solves for goes to
+    // the dofs it depends on (as distribute_local_to_global puts a cell's
+    // load): along the obstacle's surface it moves the node.
+    for (const auto dof : held_dofs)
+      if (discretisation.locally_owned_dofs().is_element(dof))
+        if (const auto *entries = constraints.get_constraint_entries(dof))
+          if (!entries->empty())
+            {
+              for (const auto &[other, weight] : *entries)
+                system_rhs(other) += weight * load_vector(dof);
+              system_rhs(dof) -= load_vector(dof);
+            }
+    system_rhs.compress(VectorOperation::add);
 
     if (linearisation.penalised)
       {
+        // On the node's free components; a component fixed by a support
+        // moves its share to the right-hand side.
         for (const auto &spring : linearisation.springs)
           {
             const auto &node = *spring.node;
             for (unsigned int a = 0; a < dim; ++a)
-              if (node.normal[a] != 0.)
+              if (node.normal[a] != 0. && node.free[a])
                 {
                   for (unsigned int b = 0; b < dim; ++b)
                     if (node.normal[b] != 0.)
-                      system_matrix.add(node.dofs[a],
-                                        node.dofs[b],
-                                        spring.stiffness * node.normal[a] *
-                                          node.normal[b]);
+                      {
+                        if (node.free[b])
+                          system_matrix.add(node.dofs[a],
+                                            node.dofs[b],
+                                            spring.stiffness * node.normal[a] *
+                                              node.normal[b]);
+                        else
+                          system_rhs(node.dofs[a]) -=
+                            spring.stiffness * node.normal[a] * node.normal[b] *
+                            constraints.get_inhomogeneity(node.dofs[b]);
+                      }
                   system_rhs(node.dofs[a]) -=
                     spring.rest_force * node.normal[a];
                 }

@@ -119,7 +119,7 @@ namespace signorini
     geometry.parse_parameters(prm, folders);
     material.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
-    obstacle.parse_parameters(prm);
+    obstacle.parse_parameters(prm, folders);
     contact.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     refinement.parse_parameters(prm);

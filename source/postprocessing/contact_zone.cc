@@ -8,70 +8,184 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** A unit vector along the contact zone of unit normal @p normal: the
+     * axis least aligned with it (the first of equals), made orthogonal to
+     * it. */
+    template <int dim>
+    Tensor<1, dim>
+    zone_tangent(const Tensor<1, dim> &normal)
+    {
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < dim; ++d)
+        if (std::abs(normal[d]) < std::abs(normal[axis]))
+          axis = d;
+      Tensor<1, dim> e;
+      e[axis]                      = 1.;
+      const Tensor<1, dim> tangent = e - (e * normal) * normal;
+      return tangent / tangent.norm();
+    }
+  } // namespace
+
   template <int dim>
   ContactZone<dim>
   evaluate_contact_zone(const Discretisation<dim>           &discretisation,
                         const ContactSurface<dim>           &surface,
-                        const Obstacle<dim>                 &obstacle,
                         const TrilinosWrappers::MPI::Vector &pressure,
                         const Reference<dim>                &reference)
   {
-    const MPI_Comm   comm = discretisation.mpi_communicator();
-    ContactZone<dim> zone;
-    double           max_pressure = -std::numeric_limits<double>::max();
-    double           x_min = std::numeric_limits<double>::max(), x_max = -x_min;
-    for (const auto &node : surface.nodes())
+    const MPI_Comm     comm        = discretisation.mpi_communicator();
+    const auto        &obstacles   = surface.obstacles();
+    const unsigned int n_obstacles = obstacles.size();
+    const auto        &nodes       = surface.nodes();
+    ContactZone<dim>   zone;
+    zone.obstacles.resize(n_obstacles);
+
+    // Peak pressure, nodal forces and the mean normal of the active nodes.
+    const double                none = -std::numeric_limits<double>::max();
+    double                      max_pressure = none;
+    std::vector<double>         peak(n_obstacles, none);
+    std::vector<Tensor<1, dim>> mean_normal(n_obstacles);
+    std::vector<unsigned int>   n_active(n_obstacles, 0);
+    for (const auto &node : nodes)
       if (node.owned)
         {
-          max_pressure = std::max(max_pressure, pressure(node.scalar_dof));
+          const double p      = pressure(node.scalar_dof);
+          max_pressure        = std::max(max_pressure, p);
+          auto &contact       = zone.obstacles[node.obstacle];
+          peak[node.obstacle] = std::max(peak[node.obstacle], p);
+          contact.force += p * node.mass * node.normal;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (!node.free[d] && node.normal[d] != 0.)
+              {
+                zone.supported_force[d] += p * node.mass * node.normal[d];
+                zone.supported = true;
+              }
           if (node.active)
             {
-              x_min = std::min(x_min, node.position[0]);
-              x_max = std::max(x_max, node.position[0]);
+              mean_normal[node.obstacle] += node.normal;
+              ++n_active[node.obstacle];
             }
         }
-    max_pressure = Utilities::MPI::max(max_pressure, comm);
-    zone.max_pressure =
-      max_pressure == -std::numeric_limits<double>::max() ? 0. : max_pressure;
-    x_min              = Utilities::MPI::min(x_min, comm);
-    x_max              = Utilities::MPI::max(x_max, comm);
-    zone.contact_width = x_max >= x_min ? x_max - x_min : 0.;
+    zone.supported = Utilities::MPI::max(zone.supported ? 1U : 0U, comm) > 0;
+    if (zone.supported)
+      zone.supported_force = Utilities::MPI::sum(zone.supported_force, comm);
+    max_pressure      = Utilities::MPI::max(max_pressure, comm);
+    zone.max_pressure = max_pressure == none ? 0. : max_pressure;
+    for (unsigned int k = 0; k < n_obstacles; ++k)
+      {
+        auto &contact        = zone.obstacles[k];
+        peak[k]              = Utilities::MPI::max(peak[k], comm);
+        contact.max_pressure = peak[k] == none ? 0. : peak[k];
+        contact.force        = Utilities::MPI::sum(contact.force, comm);
+        mean_normal[k]       = Utilities::MPI::sum(mean_normal[k], comm);
+        if (Utilities::MPI::sum(n_active[k], comm) == 0)
+          continue;
+        const double         length  = mean_normal[k].norm();
+        const Tensor<1, dim> tangent = zone_tangent<dim>(
+          length > 0 ? mean_normal[k] / length : mean_normal[k]);
+        double low = std::numeric_limits<double>::max(), high = -low;
+        for (const auto &node : nodes)
+          if (node.owned && node.active && node.obstacle == k)
+            {
+              const double s = tangent * node.position;
+              low            = std::min(low, s);
+              high           = std::max(high, s);
+            }
+        low                   = Utilities::MPI::min(low, comm);
+        high                  = Utilities::MPI::max(high, comm);
+        contact.contact_width = high >= low ? high - low : 0.;
+        zone.contact_width =
+          std::max(zone.contact_width, contact.contact_width);
+      }
 
     // The nodal pressures sit at one dof per node, the others hold zero:
     // summed over all components, the shape functions interpolate them.
+    // Each obstacle's pressure and active indicator are those of its own
+    // nodes.
+    std::unordered_map<types::global_dof_index, unsigned int> node_at;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      node_at[nodes[i].scalar_dof] = i;
     const auto               &ids   = surface.contact_ids();
     const Function<dim>      *exact = reference.contact_pressure.get();
     const Quadrature<dim - 1> rule =
       discretisation.simplex() && dim == 3 ?
         Quadrature<dim - 1>(QGaussSimplex<dim - 1>(4)) :
         Quadrature<dim - 1>(QGauss<dim - 1>(6));
-    const auto        &fe          = discretisation.fe();
-    const auto        &constraints = discretisation.constraints();
-    FEFaceValues<dim>  fe_face_values(discretisation.mapping(),
-                                     fe,
-                                     rule,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
+    const auto       &fe          = discretisation.fe();
+    const auto       &constraints = discretisation.constraints();
+    FEFaceValues<dim> fe_face_values(
+      discretisation.mapping(),
+      fe,
+      rule,
+      update_values | update_quadrature_points | update_JxW_values |
+        (n_obstacles > 1 ? update_normal_vectors : update_default));
+    const unsigned int                   n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<double>                  nodal(n);
-    const auto nodal_pressure = [&](const types::global_dof_index i) {
+    std::vector<std::vector<double>> nodal(n_obstacles, std::vector<double>(n)),
+      indicator(n_obstacles, std::vector<double>(n));
+    std::vector<std::vector<Tensor<1, dim>>> nodal_force(
+      n_obstacles, std::vector<Tensor<1, dim>>(n));
+    // Obstacle k's pressure (or active indicator) at dof i.
+    const auto own_value = [&](const types::global_dof_index i,
+                               const unsigned int            k,
+                               const bool                    active) {
+      const auto at = node_at.find(i);
+      if (at == node_at.end() || nodes[at->second].obstacle != k)
+        return 0.;
+      if (active)
+        return nodes[at->second].active ? 1. : 0.;
+      return static_cast<double>(pressure(i));
+    };
+    const auto nodal_value = [&](const types::global_dof_index i,
+                                 const unsigned int            k,
+                                 const bool                    active) {
       if (!constraints.is_constrained(i))
-        return pressure(i);
+        return n_obstacles == 1 && !active ? static_cast<double>(pressure(i)) :
+                                             own_value(i, k, active);
       double value = 0.;
       if (const auto *entries = constraints.get_constraint_entries(i))
         for (const auto &[master, weight] : *entries)
-          value += weight * pressure(master);
+          value += weight * (n_obstacles == 1 && !active ?
+                               static_cast<double>(pressure(master)) :
+                               own_value(master, k, active));
       return value;
     };
 
-    double         integral = 0., error_squared = 0., norm_squared = 0.;
-    Tensor<1, dim> resultant, normal;
+    // Obstacle k's pressure times its normal at dof i: interpolated, the
+    // force density whose integral is the nodal forces' sum.
+    const auto own_normal = [&](const types::global_dof_index i,
+                                const unsigned int            k) {
+      const auto at = node_at.find(i);
+      if (at == node_at.end() || nodes[at->second].obstacle != k)
+        return Tensor<1, dim>();
+      return nodes[at->second].normal;
+    };
+    const auto nodal_force_density = [&](const types::global_dof_index i,
+                                         const unsigned int            k) {
+      const auto own_pressure = [&](const types::global_dof_index j) {
+        return n_obstacles == 1 ? static_cast<double>(pressure(j)) :
+                                  own_value(j, k, false);
+      };
+      if (!constraints.is_constrained(i))
+        return own_pressure(i) * own_normal(i, k);
+      Tensor<1, dim> value;
+      if (const auto *entries = constraints.get_constraint_entries(i))
+        for (const auto &[master, weight] : *entries)
+          value += weight * (own_pressure(master) * own_normal(master, k));
+      return value;
+    };
+
+    double              integral = 0., error_squared = 0., norm_squared = 0.;
+    Tensor<1, dim>      resultant;
+    std::vector<double> area(n_obstacles, 0.);
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -81,19 +195,36 @@ namespace signorini
             {
               fe_face_values.reinit(cell, f);
               cell->get_dof_indices(dof_indices);
-              for (unsigned int i = 0; i < n; ++i)
-                nodal[i] = nodal_pressure(dof_indices[i]);
+              for (unsigned int k = 0; k < n_obstacles; ++k)
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    nodal[k][i]       = nodal_value(dof_indices[i], k, false);
+                    indicator[k][i]   = nodal_value(dof_indices[i], k, true);
+                    nodal_force[k][i] = nodal_force_density(dof_indices[i], k);
+                  }
               for (const unsigned int q :
                    fe_face_values.quadrature_point_indices())
                 {
-                  double p_h = 0.;
-                  for (unsigned int i = 0; i < n; ++i)
-                    p_h += nodal[i] * fe_face_values.shape_value(i, q);
                   const double JxW = fe_face_values.JxW(q);
                   const auto  &x   = fe_face_values.quadrature_point(q);
+                  // The point belongs to the obstacle it faces.
+                  const unsigned int k =
+                    n_obstacles == 1 ?
+                      0 :
+                      obstacles.facing(x, fe_face_values.normal_vector(q));
+                  double         p_h = 0., active_h = 0.;
+                  Tensor<1, dim> force_h;
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      p_h += nodal[k][i] * fe_face_values.shape_value(i, q);
+                      active_h +=
+                        indicator[k][i] * fe_face_values.shape_value(i, q);
+                      force_h +=
+                        nodal_force[k][i] * fe_face_values.shape_value(i, q);
+                    }
                   integral += p_h * JxW;
-                  obstacle.gap(x, normal);
-                  resultant += p_h * JxW * normal;
+                  resultant += force_h * JxW;
+                  area[k] += active_h * JxW;
                   if (exact)
                     {
                       const double p = exact->value(x);
@@ -104,7 +235,12 @@ namespace signorini
             }
     zone.integrated_pressure = Utilities::MPI::sum(integral, comm);
     zone.pressure_resultant  = Utilities::MPI::sum(resultant, comm);
-    zone.pressure_error      = std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int k = 0; k < n_obstacles; ++k)
+      {
+        zone.obstacles[k].contact_area = Utilities::MPI::sum(area[k], comm);
+        zone.contact_area += zone.obstacles[k].contact_area;
+      }
+    zone.pressure_error = std::numeric_limits<double>::quiet_NaN();
     if (exact)
       {
         check_finite(*exact, comm);
@@ -117,16 +253,54 @@ namespace signorini
     return zone;
   }
 
+  template <int dim>
+  void
+  add_contact_columns(StatisticsRow          &row,
+                      const ContactZone<dim> &zone,
+                      const ObstacleSet<dim> &obstacles,
+                      std::ostream           &out)
+  {
+    if (obstacles.single_height())
+      return;
+    row.add("contact_area", zone.contact_area);
+    const char *axes = "xyz";
+    const char *area = dim == 2 ? "contact length " : "contact area ";
+    out << "   " << area << zone.contact_area << std::endl;
+    if (obstacles.size() > 1)
+      for (unsigned int k = 0; k < obstacles.size(); ++k)
+        {
+          const std::string n       = std::to_string(obstacles.number(k));
+          const auto       &contact = zone.obstacles[k];
+          for (unsigned int d = 0; d < dim; ++d)
+            row.add("contact_force" + n + "_" + axes[d], contact.force[d]);
+          row.add("max_pressure" + n, contact.max_pressure);
+          row.add("contact_width" + n, contact.contact_width);
+          row.add("contact_area" + n, contact.contact_area);
+          out << "   obstacle " << n << ": force (" << contact.force
+              << "), max pressure " << contact.max_pressure
+              << ", contact width " << contact.contact_width << ", " << area
+              << contact.contact_area << std::endl;
+        }
+  }
+
   template ContactZone<2>
   evaluate_contact_zone(const Discretisation<2> &,
                         const ContactSurface<2> &,
-                        const Obstacle<2> &,
                         const TrilinosWrappers::MPI::Vector &,
                         const Reference<2> &);
   template ContactZone<3>
   evaluate_contact_zone(const Discretisation<3> &,
                         const ContactSurface<3> &,
-                        const Obstacle<3> &,
                         const TrilinosWrappers::MPI::Vector &,
                         const Reference<3> &);
+  template void
+  add_contact_columns(StatisticsRow &,
+                      const ContactZone<2> &,
+                      const ObstacleSet<2> &,
+                      std::ostream &);
+  template void
+  add_contact_columns(StatisticsRow &,
+                      const ContactZone<3> &,
+                      const ObstacleSet<3> &,
+                      std::ostream &);
 } // namespace signorini

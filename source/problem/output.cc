@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 namespace signorini
@@ -69,14 +70,25 @@ namespace signorini
       if (node.owned)
         {
           active += node.active ? 1 : 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            contact_force[d] += newton.residual()(node.dofs[d]);
+          // A vertex's force once, at its first node.
+          if (node.primary)
+            for (unsigned int d = 0; d < dim; ++d)
+              contact_force[d] += newton.residual()(node.dofs[d]);
           penetration = std::max(penetration,
                                  -contact_surface.deformed_gap(node, solution));
         }
     active        = Utilities::MPI::sum(active, mpi_communicator);
     contact_force = Utilities::MPI::sum(contact_force, mpi_communicator);
-    penetration   = Utilities::MPI::max(penetration, mpi_communicator);
+    // Where a support fixes a component of a contact node, K u - f there
+    // is the support's reaction and the obstacle's force together: the
+    // obstacle's share is its own.
+    const auto zone = evaluate_contact_zone(discretisation,
+                                            contact_surface,
+                                            pressure,
+                                            parameters.reference);
+    if (zone.supported)
+      contact_force += zone.supported_force;
+    penetration = Utilities::MPI::max(penetration, mpi_communicator);
     row.add_count("active_set", active);
     strategy->report(row, pcout);
     for (unsigned int d = 0; d < dim; ++d)
@@ -94,15 +106,14 @@ namespace signorini
 
     const auto probes =
       evaluate_probes(discretisation, solution, parameters.output.probe_points);
-    const auto zone = evaluate_contact_zone(discretisation,
-                                            contact_surface,
-                                            *obstacle,
-                                            pressure,
-                                            parameters.reference);
-    const auto balance =
+    auto balance =
       evaluate_balance(discretisation, loads, parameters.material, solution);
+    if (zone.supported)
+      balance.support_reaction -= zone.supported_force;
     row.add("max_pressure", zone.max_pressure);
     row.add("contact_width", zone.contact_width);
+    std::ostringstream contact_columns;
+    add_contact_columns(row, zone, *obstacle, contact_columns);
     for (unsigned int d = 0; d < dim; ++d)
       row.add(std::string("support_reaction_") + axes[d],
               balance.support_reaction[d]);
@@ -146,10 +157,15 @@ namespace signorini
     record.add_statistics(row);
 
     pcout << "   " << newton.iterations() << " iterations, " << active
-          << " active nodes, contact force " << contact_force[dim - 1]
-          << ", max penetration " << penetration << std::endl;
+          << " active nodes, contact force ";
+    if (obstacle->single_height())
+      pcout << contact_force[dim - 1];
+    else
+      pcout << "(" << contact_force << ")";
+    pcout << ", max penetration " << penetration << std::endl;
     pcout << "   max pressure " << zone.max_pressure << ", contact width "
           << zone.contact_width << ", energy " << balance.energy << std::endl;
+    pcout << contact_columns.str();
     pcout << "   equilibrium: load (" << balance.applied_force
           << ") + supports (" << balance.support_reaction
           << ") + integrated pressure " << zone.integrated_pressure

@@ -30,8 +30,11 @@ namespace signorini
                                                  parameters.contact.remedies,
                                                  pcout,
                                                  timer))
-    , obstacle(create_obstacle(parameters.obstacle))
-    , contact_surface(parameters.obstacle.contact_ids, *obstacle)
+    , obstacle(create_obstacles(parameters.obstacle))
+    , contact_surface(parameters.obstacle.contact_ids,
+                      *obstacle,
+                      parameters.contact.method !=
+                        ContactParameters::Method::none)
     , strategy(create_contact_strategy<dim>(parameters.contact,
                                             parameters.material.young_modulus,
                                             pcout))

@@ -30,7 +30,7 @@
 #include <signorini/contact/contact_strategy.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/contact/newton_driver.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/assembled_operator.h>
 #include <signorini/elasticity/loads.h>
@@ -92,7 +92,7 @@ namespace
     std::unique_ptr<Discretisation<2>>  discretisation;
     std::unique_ptr<Loads<2>>           loads;
     std::unique_ptr<ElasticOperator<2>> elastic_operator;
-    std::unique_ptr<Obstacle<2>>        obstacle;
+    std::unique_ptr<ObstacleSet<2>>     obstacle;
     std::unique_ptr<ContactSurface<2>>  surface;
     std::unique_ptr<ContactStrategy<2>> strategy;
     VectorType                          solution;
@@ -123,7 +123,7 @@ namespace
                                                parameters.contact.remedies,
                                                pcout,
                                                timer);
-      obstacle = create_obstacle(parameters.obstacle);
+      obstacle = create_obstacles(parameters.obstacle);
       surface =
         std::make_unique<ContactSurface<2>>(parameters.obstacle.contact_ids,
                                             *obstacle);
@@ -243,7 +243,8 @@ namespace
     // The obstacle is flat: the deformed gap is the bottom's displacement
     // less psi.
     const double expected_gap =
-      expected.bottom - scene.parameters.obstacle.height->value(Point<1>(0.));
+      expected.bottom -
+      scene.parameters.obstacle.obstacles[0].height->value(Point<1>(0.));
     std::cout << "  deformed gap from " << shown(gap_min, 1e-3) << " to "
               << shown(gap_max, 1e-3) << ", expected " << expected_gap << '\n';
     report("max |deformed gap - expected|",

@@ -13,7 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <signorini/contact/contact_surface.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/input/parameters.h>
 
@@ -60,7 +60,7 @@ namespace
   {
     Parameters<dim>                      parameters;
     std::unique_ptr<Discretisation<dim>> discretisation;
-    std::unique_ptr<Obstacle<dim>>       obstacle;
+    std::unique_ptr<ObstacleSet<dim>>    obstacle;
     std::unique_ptr<ContactSurface<dim>> surface;
 
     explicit Scene(const std::string &text)
@@ -82,7 +82,7 @@ namespace
          {"Boundary conditions/Traction boundary ids",
           parameters.boundary_conditions.traction_ids},
          {"Obstacle/Contact boundary ids", parameters.obstacle.contact_ids}});
-      obstacle = create_obstacle(parameters.obstacle);
+      obstacle = create_obstacles(parameters.obstacle);
       surface =
         std::make_unique<ContactSurface<dim>>(parameters.obstacle.contact_ids,
                                               *obstacle);

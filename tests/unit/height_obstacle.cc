@@ -11,7 +11,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/contact/height_obstacle.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 
 #include <algorithm>
 #include <array>
@@ -327,17 +327,19 @@ namespace
       "subsection Obstacle\n  set Height = " + height + "\nend\n");
     ObstacleParameters<dim> parameters;
     parameters.parse_parameters(prm);
-    const auto obstacle = create_obstacle(parameters);
+    const auto  obstacles = create_obstacles(parameters);
+    const auto &obstacle  = (*obstacles)[0];
     std::cout << "create_obstacle<" << dim << ">, Height = " << height
               << ", HeightObstacle: "
-              << (dynamic_cast<const HeightObstacle<dim> *>(obstacle.get()) ?
+              << (obstacles->size() == 1 &&
+                      dynamic_cast<const HeightObstacle<dim> *>(&obstacle) ?
                     "yes" :
                     "no")
               << ", contact ids:";
     for (const auto id : parameters.contact_ids)
       std::cout << ' ' << int(id);
     std::cout << '\n';
-    check_point<dim>(*obstacle, point, expected);
+    check_point<dim>(obstacle, point, expected);
   }
 } // namespace
 

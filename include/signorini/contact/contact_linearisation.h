@@ -1,6 +1,8 @@
 #ifndef signorini_contact_contact_linearisation_h
 #define signorini_contact_contact_linearisation_h
 
+#include <deal.II/lac/affine_constraints.h>
+
 #include <signorini/contact/contact_surface.h>
 
 #include <cstddef>
@@ -15,7 +17,9 @@ namespace signorini
    * operators.
    *
    * - Held nodes sit on the obstacle: n.u = -gap, one constraint per node
-   *   (exact contact: the active set).
+   *   (exact contact: the active set); the held nodes of a corner (a vertex
+   *   held by several obstacles) together, on as many of the vertex's free
+   *   components.
    * - Springs push a node along its normal n with the force
    *   (-stiffness n.u - rest_force + extra_force) n [N]: a penalty of
    *   stiffness m / epsilon with rest_force = m gap / epsilon, and around
@@ -53,6 +57,13 @@ namespace signorini
     /** Whether a change of key with the same second entry changes only the
      * rows and columns of a few nodes (an AMG may be kept). */
     bool local_changes = false;
+
+    /** Adds the held nodes' constraints n.u = -gap to @p constraints:
+     * each solved for the node's scalar dof; at a corner with several held
+     * nodes, solved together for the free components that make the system
+     * best conditioned. */
+    void
+    add_held_constraints(dealii::AffineConstraints<double> &constraints) const;
   };
 } // namespace signorini
 

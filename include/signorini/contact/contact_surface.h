@@ -1,16 +1,21 @@
 #ifndef signorini_contact_contact_surface_h
 #define signorini_contact_contact_surface_h
 
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
+#include <signorini/input/input_error.h>
 
 #include <array>
 #include <cstddef>
+#include <map>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -18,18 +23,23 @@
 namespace signorini
 {
   /**
-   * A vertex of the candidate contact boundary whose displacement along the
-   * obstacle's normal is free (not fixed by a Dirichlet condition or a
-   * hanging node).
+   * A vertex of the candidate contact boundary facing one obstacle, along
+   * whose normal it may move (its displacement along the normal is not all
+   * fixed by Dirichlet conditions or hanging nodes). A vertex that may
+   * touch several obstacles at once (the bottom of a groove) is several
+   * contact nodes with the same dofs, one per obstacle: a corner.
    */
   template <int dim>
   struct ContactNode
   {
     /** Displacement dofs, one per component. */
     std::array<dealii::types::global_dof_index, dim> dofs;
+    /** Which of them are free (not fixed by a Dirichlet condition). */
+    std::array<bool, dim> free;
     /** The dof that carries the node's scalars (contact pressure, active
-     * flag) in vectors of the displacement's layout: the component along
-     * which the normal is largest. */
+     * flag) in vectors of the displacement's layout: a free component,
+     * the one along which the normal is largest; at a corner each node has
+     * its own. */
     dealii::types::global_dof_index scalar_dof;
     /** Where the node is [mm]. */
     dealii::Point<dim> position;
@@ -37,7 +47,7 @@ namespace signorini
     dealii::Tensor<1, dim> normal;
     /** Initial gap to the obstacle along the normal [mm]. */
     double gap;
-    /** Which obstacle the node faces. */
+    /** Which obstacle the node faces (its index in the ObstacleSet). */
     unsigned int obstacle = 0;
     /** Lumped contact-boundary mass, integral of the shape function over
      * the contact boundary [mm^(dim-1)]; set on owned nodes only. */
@@ -45,6 +55,12 @@ namespace signorini
     bool   owned;
     /** In the contact strategy's active set. */
     bool active = false;
+    /** Whether this is the vertex's first node (its nearest obstacle):
+     * quantities of the vertex (its nodal force) count there once. */
+    bool primary = true;
+    /** The corner the node belongs to (an index into
+     * ContactSurface::corners()), or invalid_unsigned_int. */
+    unsigned int corner = dealii::numbers::invalid_unsigned_int;
 
     /** n.u at the node, for the displacement @p u [mm]. */
     double
@@ -59,8 +75,10 @@ namespace signorini
 
   /**
    * The candidate contact nodes of the current mesh: the vertices on the
-   * contact boundary ids that face an obstacle, each with its normal, gap
-   * and lumped mass, and the active set of the contact strategy.
+   * contact boundary ids, each facing the obstacle nearest to it (smallest
+   * gap) and, as a corner, up to dim obstacles whose normals are
+   * independent on its free components; each node with its normal, gap and
+   * lumped mass, and the active set of the contact strategy.
    */
   template <int dim>
   class ContactSurface
@@ -68,11 +86,16 @@ namespace signorini
   public:
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
+    /** @p check_input: setup() refuses a body that starts inside an
+     * obstacle, a support that holds a node inside one, and contact
+     * boundary ids where no node can act (off for Contact/Method = none). */
     ContactSurface(const std::set<dealii::types::boundary_id> &contact_ids,
-                   const Obstacle<dim>                        &obstacle);
+                   const ObstacleSet<dim>                     &obstacles,
+                   const bool check_input = true);
 
     /** Finds the nodes of @p discretisation's current mesh. Throws
-     * InputError if a gap is not a finite number. */
+     * InputError if a gap is not a finite number, and for the input that
+     * the constructor's @p check_input names. */
     void
     setup(const Discretisation<dim> &discretisation);
 
@@ -81,6 +104,15 @@ namespace signorini
     const std::vector<ContactNode<dim>> &
     nodes() const;
 
+    /** The nodes of each vertex that faces more than one obstacle, the
+     * primary one first. */
+    const std::vector<std::vector<unsigned int>> &
+    corners() const;
+
+    /** The obstacles. */
+    const ObstacleSet<dim> &
+    obstacles() const;
+
     /** The boundary ids that may touch an obstacle. */
     const std::set<dealii::types::boundary_id> &
     contact_ids() const;
@@ -88,6 +120,13 @@ namespace signorini
     /** The gap of @p node after the displacement @p u [mm]. */
     double
     deformed_gap(const ContactNode<dim> &node, const VectorType &u) const;
+
+    /** The obstacles' normal forces lambda_i [N] at the owned nodes (0
+     * elsewhere) from the nodal forces @p residual = K u - f: on the free
+     * components of each vertex, residual = sum of lambda_i n_i over its
+     * nodes (least squares at a corner). */
+    std::vector<double>
+    normal_forces(const VectorType &residual) const;
 
     /** Gaps below this count as touching: round-off in the body's size
      * [mm]. */
@@ -100,11 +139,55 @@ namespace signorini
     active_set_signature() const;
 
   private:
+    /** A vertex of the contact boundary with its gap and normal to every
+     * obstacle. */
+    struct Vertex
+    {
+      std::array<dealii::types::global_dof_index, dim> dofs;
+      std::array<bool, dim>                            free;
+      dealii::Point<dim>                               position;
+      std::vector<double>                              gaps;
+      std::vector<dealii::Tensor<1, dim>>              normals;
+      std::set<dealii::types::boundary_id>             boundary_ids;
+    };
+
+    /** Below this, the free part of a unit normal is none: the node cannot
+     * move along it. */
+    static constexpr double fixed_along_normal = 1e-8;
+
+    /** The length of @p normal's part along the @p free components. */
+    static double
+    free_part(const dealii::Tensor<1, dim> &normal,
+              const std::array<bool, dim>  &free);
+
+    /** Throws @p error of the first process that has one (by rank) on
+     * every process. */
+    static void
+    throw_first(const std::optional<InputError> &error, const MPI_Comm comm);
+
+    /** The input the constructor's check_input names
+     * (contact_surface_checks.cc): a body inside an obstacle before it
+     * moves, a support that holds a node inside one, contact boundary ids
+     * with no node that can act (@p acting_vertices: per id, the vertices
+     * that face an obstacle). */
+    void
+    check_vertices(
+      const std::vector<Vertex>                                &vertices,
+      const std::map<dealii::types::boundary_id, unsigned int> &acting_vertices,
+      const dealii::AffineConstraints<double> &constraints) const;
+
+    /** The nodes' lumped contact-boundary masses
+     * (contact_surface_masses.cc). */
+    void
+    compute_masses(const Discretisation<dim> &discretisation);
+
     const std::set<dealii::types::boundary_id> ids;
-    const Obstacle<dim>                       &obstacle;
+    const ObstacleSet<dim>                    &obstacle_set;
+    const bool                                 check_input;
     MPI_Comm                                   mpi_communicator;
     double                                     tolerance = 0.;
     std::vector<ContactNode<dim>>              contact_nodes;
+    std::vector<std::vector<unsigned int>>     corner_nodes;
   };
 } // namespace signorini
 

@@ -2,18 +2,30 @@
 #define signorini_contact_obstacle_h
 
 #include <deal.II/base/bounding_box.h>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/parsed_function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <signorini/contact/obstacle_parameters.h>
+
 #include <memory>
 #include <ostream>
-#include <set>
 #include <string>
+#include <vector>
 
 namespace signorini
 {
+  /**
+   * A surface for ParaView: points and the cells between them, segments
+   * (2 points) in 2D, triangles or quadrilaterals (3 or 4 points, in VTK's
+   * order) in 3D.
+   */
+  template <int dim>
+  struct SurfaceMesh
+  {
+    std::vector<dealii::Point<dim>>        points;
+    std::vector<std::vector<unsigned int>> cells;
+  };
+
   /**
    * A rigid obstacle: for a point of the body, how far it is from the
    * obstacle's surface and in which direction the surface faces it.
@@ -35,42 +47,32 @@ namespace signorini
     gap(const dealii::Point<dim> &point,
         dealii::Tensor<1, dim>   &normal) const = 0;
 
-    /** The parameter entry that describes the obstacle, for messages. */
+    /** The parameter entry that describes the obstacle, for messages
+     * ("Obstacle 2/Center"). */
     virtual std::string
     entry() const = 0;
 
-    /** Writes the obstacle's surface around @p box (the body's bounding box)
-     * as a VTU mesh for ParaView. */
+    /** The obstacle's surface around @p box (the body's bounding box), for
+     * ParaView. */
+    virtual SurfaceMesh<dim>
+    surface(const dealii::BoundingBox<dim> &box) const = 0;
+
+    /** Writes surface(@p box) as a VTU file. */
     virtual void
-    write_vtu(std::ostream &out, const dealii::BoundingBox<dim> &box) const = 0;
+    write_vtu(std::ostream &out, const dealii::BoundingBox<dim> &box) const;
   };
 
   /**
-   * The rigid obstacle and where it may touch the body: subsection
-   * `Obstacle`. Its surface is the graph of a height function, y = psi(x)
-   * in 2D and z = psi(x, y) in 3D (HeightObstacle); only the boundary ids in
-   * `Contact boundary ids` may touch it.
+   * Writes the surfaces @p meshes as one VTU file (zlib-compressed, each
+   * cell with points of its own), with the point field `obstacle` holding
+   * each surface's entry of @p numbers.
    */
   template <int dim>
-  struct ObstacleParameters
-  {
-    /** The expression of psi [mm] of x (2D) or x, y (3D). */
-    std::string height_expression = "0";
-    /** psi, parsed. */
-    std::unique_ptr<dealii::FunctionParser<dim - 1>> height;
-    std::set<dealii::types::boundary_id>             contact_ids = {2};
+  void
+  write_surfaces_vtu(std::ostream                        &out,
+                     const std::vector<SurfaceMesh<dim>> &meshes,
+                     const std::vector<unsigned int>     &numbers);
 
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
-  };
-
-  /** The obstacle that @p parameters describe. */
-  template <int dim>
-  std::unique_ptr<Obstacle<dim>>
-  create_obstacle(const ObstacleParameters<dim> &parameters);
 } // namespace signorini
 
 #endif

@@ -5,45 +5,90 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <signorini/contact/contact_surface.h>
-#include <signorini/contact/obstacle.h>
 #include <signorini/discretisation/discretisation.h>
+#include <signorini/output/run_record.h>
 #include <signorini/postprocessing/reference.h>
+
+#include <vector>
 
 namespace signorini
 {
+  /** What the contact with one obstacle measures. */
+  template <int dim>
+  struct ObstacleContact
+  {
+    /** Largest nodal contact pressure [MPa]. */
+    double max_pressure = 0.;
+    /** Extent of the active nodes along the contact zone [mm]: along the
+     * coordinate axis least aligned with the active nodes' mean normal,
+     * made tangent to it (x for a floor, y for a wall x = const). */
+    double contact_width = 0.;
+    /** Measure of the contact zone [mm in 2D, mm^2 in 3D]: the integral
+     * over the contact boundary of the interpolated indicator of the
+     * active nodes (faces between active nodes count whole, faces at the
+     * zone's edge by the share of their active vertices). */
+    double contact_area = 0.;
+    /** The nodal forces of the obstacle on the body, sum of p_i m_i n_i
+     * [N]. */
+    dealii::Tensor<1, dim> force;
+  };
+
   /** What a cycle's contact zone measures. */
   template <int dim>
   struct ContactZone
   {
     /** Largest nodal contact pressure [MPa]. */
     double max_pressure = 0.;
-    /** Extent along x of the active nodes [mm]. */
+    /** The largest contact_width of the obstacles [mm]. */
     double contact_width = 0.;
+    /** The sum of the obstacles' contact_area [mm in 2D, mm^2 in 3D]. */
+    double contact_area = 0.;
     /** Integral of the contact pressure over the contact boundary [N]. */
     double integrated_pressure = 0.;
-    /** Integral of the contact pressure times the obstacle's normal: the
-     * force of the obstacle on the body [N]. */
+    /** Integral of the interpolated nodal pressure times normal: the force
+     * of the obstacles on the body [N], the sum of the nodal forces. */
     dealii::Tensor<1, dim> pressure_resultant;
     /** Relative L2 error of the pressure against Reference/Contact pressure
      * (NaN if none). */
     double pressure_error = 0.;
+    /** Each obstacle's contact, in the order of the ObstacleSet. */
+    std::vector<ObstacleContact<dim>> obstacles;
+    /** The obstacles' nodal forces on components that a support fixes,
+     * sum of p_i m_i n_i there [N]: K u - f holds them in the support
+     * reaction; and whether there are any. */
+    dealii::Tensor<1, dim> supported_force;
+    bool                   supported = false;
   };
 
   /**
    * The contact zone of the nodal contact @p pressure (at each contact
-   * node's scalar dof, ghosted): its largest value, the extent of the active
-   * nodes, and the integral of the pressure field that interpolates the
-   * nodal values (a hanging node takes the pressure its masters give it, a
-   * supported one none), with a Gauss rule of high order, since a closed-form
-   * pressure has a square-root edge.
+   * node's scalar dof, ghosted): its largest value, the extent and measure
+   * of the active nodes, and the integral of the pressure field that
+   * interpolates the nodal values of each obstacle (a hanging node takes
+   * the pressure its masters give it, a supported one none), with a Gauss
+   * rule of high order, since a closed-form pressure has a square-root edge.
    */
   template <int dim>
   ContactZone<dim>
   evaluate_contact_zone(const Discretisation<dim> &discretisation,
                         const ContactSurface<dim> &surface,
-                        const Obstacle<dim>       &obstacle,
                         const dealii::TrilinosWrappers::MPI::Vector &pressure,
                         const Reference<dim>                        &reference);
+
+  /**
+   * Adds the statistics columns of the contact in general form, except for
+   * a scene with one height obstacle (whose columns stay as they were):
+   * `contact_area`, and with several obstacles, for obstacle N (its
+   * subsection `Obstacle N`, 1 for `Obstacle`) `contact_forceN_x, _y[, _z]`,
+   * `max_pressureN`, `contact_widthN` and `contact_areaN`. Prints them on
+   * @p out.
+   */
+  template <int dim>
+  void
+  add_contact_columns(StatisticsRow          &row,
+                      const ContactZone<dim> &zone,
+                      const ObstacleSet<dim> &obstacles,
+                      std::ostream           &out);
 } // namespace signorini
 
 #endif

@@ -10,7 +10,7 @@
 #include <signorini/contact/contact_strategy.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/contact/newton_driver.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/elastic_operator.h>
 #include <signorini/elasticity/loads.h>
@@ -123,7 +123,7 @@ namespace signorini
     Discretisation<dim>                   discretisation;
     Loads<dim>                            loads;
     std::unique_ptr<ElasticOperator<dim>> elastic_operator;
-    std::unique_ptr<Obstacle<dim>>        obstacle;
+    std::unique_ptr<ObstacleSet<dim>>     obstacle;
     ContactSurface<dim>                   contact_surface;
     std::unique_ptr<ContactStrategy<dim>> strategy;
 

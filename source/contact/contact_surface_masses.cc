@@ -1,0 +1,85 @@
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
+
+#include <signorini/contact/contact_surface.h>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ContactSurface<dim>::compute_masses(const Discretisation<dim> &discretisation)
+  {
+    const auto        &constraints = discretisation.constraints();
+    const auto        &owned_dofs  = discretisation.locally_owned_dofs();
+    const unsigned int n_obstacles = obstacle_set.size();
+    // Lumped contact-boundary mass: the integral of each shape function over
+    // the contact boundary, condensed onto the free nodes; with several
+    // obstacles, a node's over the part of the boundary that faces its
+    // obstacle (the quadrature points whose normal faces it most
+    // squarely).
+    const auto                 &fe = discretisation.fe();
+    const unsigned int          n  = fe.n_dofs_per_cell();
+    std::vector<VectorType>     mass(n_obstacles,
+                                 VectorType(owned_dofs, mpi_communicator));
+    FEFaceValues<dim>           fe_face_values(discretisation.mapping(),
+                                     fe,
+                                     discretisation.face_quadrature(),
+                                     update_values | update_JxW_values |
+                                       (n_obstacles > 1 ?
+                                                    update_quadrature_points |
+                                            update_normal_vectors :
+                                                    update_default));
+    std::vector<Vector<double>> cell_mass(n_obstacles, Vector<double>(n));
+    std::vector<types::global_dof_index> dof_indices(n);
+    for (const auto &cell :
+         discretisation.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              ids.count(cell->face(f)->boundary_id()))
+            {
+              fe_face_values.reinit(cell, f);
+              if (n_obstacles == 1)
+                {
+                  cell_mass[0] = 0;
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (const unsigned int q :
+                         fe_face_values.quadrature_point_indices())
+                      cell_mass[0](i) += fe_face_values.shape_value(i, q) *
+                                         fe_face_values.JxW(q);
+                }
+              else
+                {
+                  for (auto &m : cell_mass)
+                    m = 0;
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    {
+                      const unsigned int k =
+                        obstacle_set.facing(fe_face_values.quadrature_point(q),
+                                            fe_face_values.normal_vector(q));
+                      for (unsigned int i = 0; i < n; ++i)
+                        cell_mass[k](i) += fe_face_values.shape_value(i, q) *
+                                           fe_face_values.JxW(q);
+                    }
+                }
+              cell->get_dof_indices(dof_indices);
+              for (unsigned int k = 0; k < n_obstacles; ++k)
+                constraints.distribute_local_to_global(cell_mass[k],
+                                                       dof_indices,
+                                                       mass[k]);
+            }
+    for (auto &m : mass)
+      m.compress(VectorOperation::add);
+    for (auto &node : contact_nodes)
+      if (node.owned)
+        node.mass = mass[node.obstacle](node.scalar_dof);
+  }
+
+  template void
+  ContactSurface<2>::compute_masses(const Discretisation<2> &);
+  template void
+  ContactSurface<3>::compute_masses(const Discretisation<3> &);
+} // namespace signorini

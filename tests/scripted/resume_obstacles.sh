@@ -1,0 +1,10 @@
+# resume.sh with two plane obstacles on two processes: an inclined floor
+# under the beam and a wall beyond its tip (every contact node a corner of
+# two nodes), killed and resumed with the same results.
+source "$TESTS/common.bash"
+SCENE=("subsection Obstacle" "  set Type   = plane" "  set Height = 0"
+  "  set Point  = 0, -0.15" "  set Normal = 0.02, 1" "end"
+  "subsection Obstacle 2" "  set Type   = plane" "  set Point  = 10.005, 0"
+  "  set Normal = -1, 0" "end")
+CYCLES=4
+resume_test mpirun -np 2
