@@ -80,13 +80,15 @@ namespace signorini
         contact_nodes.push_back(found[i].second);
 
     // Lumped contact-boundary mass: the integral of each shape function over
-    // the contact boundary, condensed onto the free nodes.
+    // the contact boundary (weighted by the measure's weight), condensed
+    // onto the free nodes.
     const auto       &fe = discretisation.fe();
     VectorType        mass(owned_dofs, mpi_communicator);
     FEFaceValues<dim> fe_face_values(discretisation.mapping(),
                                      fe,
                                      discretisation.face_quadrature(),
-                                     update_values | update_JxW_values);
+                                     update_values | update_JxW_values |
+                                       update_quadrature_points);
     Vector<double>    cell_mass(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell :
@@ -102,7 +104,8 @@ namespace signorini
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
                   cell_mass(i) +=
-                    fe_face_values.shape_value(i, q) * fe_face_values.JxW(q);
+                    fe_face_values.shape_value(i, q) * fe_face_values.JxW(q) *
+                    discretisation.weight(fe_face_values.quadrature_point(q));
               cell->get_dof_indices(dof_indices);
               constraints.distribute_local_to_global(cell_mass,
                                                      dof_indices,

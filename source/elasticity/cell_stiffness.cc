@@ -1,5 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/cell_stiffness.h>
 
 #include <cmath>
@@ -13,11 +14,62 @@ namespace signorini
     /** Shapes stored at most, and how many look-ups must have found a
      * repetition for the cache to go on storing. */
     constexpr unsigned int max_shapes = 4096;
+
+    /** The strain (r, z, theta) of shape function @p i of an axisymmetric
+     * model at quadrature point @p q. */
+    template <int dim>
+    SymmetricTensor<2, 3>
+    revolved_shape_strain(const FEValues<dim> &fe_values,
+                          const unsigned int   i,
+                          const unsigned int   q)
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      const bool                       radial =
+        fe_values.get_fe().system_to_component_index(i).first == 0;
+      return axisymmetry::revolved_strain<dim>(
+        fe_values[displacement].symmetric_gradient(i, q),
+        radial ?
+          fe_values.shape_value(i, q) / fe_values.quadrature_point(q)[0] :
+          0.);
+    }
+
+    /** The matrix of an axisymmetric model's cell. */
+    template <int dim>
+    void
+    compute_revolved(const Material      &material,
+                     const FEValues<dim> &fe_values,
+                     FullMatrix<double>  &cell_matrix)
+    {
+      const unsigned int n = fe_values.get_fe().n_dofs_per_cell();
+      std::vector<SymmetricTensor<2, 3>> strain(n), stress(n);
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const double JxW = fe_values.JxW(q) *
+                             axisymmetry::weight(fe_values.quadrature_point(q));
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              strain[i] = revolved_shape_strain(fe_values, i, q);
+              stress[i] = material.template stress<3>(strain[i]) * JxW;
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j <= i; ++j)
+              cell_matrix(i, j) += strain[i] * stress[j];
+        }
+    }
   } // namespace
+
+  UpdateFlags
+  elastic_update_flags(const Material &material)
+  {
+    return update_gradients | update_JxW_values |
+           (material.axisymmetric() ? update_values | update_quadrature_points :
+                                      update_default);
+  }
 
   template <int dim>
   CellStiffness<dim>::CellStiffness(const Material &material)
     : material(material)
+    , scale_exponent(dim - 2. + (material.axisymmetric() ? 1. : 0.))
   {
   }
 
@@ -38,19 +90,22 @@ namespace signorini
     const FEValuesExtractors::Vector displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(n), stress(n);
     cell_matrix.reinit(n, n);
-    for (const unsigned int q : fe_values.quadrature_point_indices())
-      {
-        const double JxW = fe_values.JxW(q);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            strain[i] = fe_values[displacement].symmetric_gradient(i, q);
-            stress[i] = material.template stress<dim>(strain[i]) * JxW;
-          }
-        // The matrix is symmetric: the lower triangle, mirrored below.
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j <= i; ++j)
-            cell_matrix(i, j) += strain[i] * stress[j];
-      }
+    if (material.axisymmetric())
+      compute_revolved(material, fe_values, cell_matrix);
+    else
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const double JxW = fe_values.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              strain[i] = fe_values[displacement].symmetric_gradient(i, q);
+              stress[i] = material.template stress<dim>(strain[i]) * JxW;
+            }
+          // The matrix is symmetric: the lower triangle, mirrored below.
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j <= i; ++j)
+              cell_matrix(i, j) += strain[i] * stress[j];
+        }
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < i; ++j)
         cell_matrix(j, i) = cell_matrix(i, j);
@@ -60,7 +115,7 @@ namespace signorini
   typename CellStiffness<dim>::Shape
   CellStiffness<dim>::shape_of(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    double                                               &scale)
+    double                                               &scale) const
   {
     const Point<dim> origin = cell->vertex(0);
     scale                   = cell->vertex(1).distance(origin);
@@ -69,6 +124,8 @@ namespace signorini
     for (unsigned int v = 1; v < cell->n_vertices(); ++v)
       for (unsigned int d = 0; d < dim; ++d)
         shape[(v - 1) * dim + d] = (cell->vertex(v)[d] - origin[d]) / scale;
+    if (material.axisymmetric())
+      shape.back() = origin[0] / scale;
     return shape;
   }
 
@@ -81,10 +138,10 @@ namespace signorini
     const auto found = cache.find(shape_of(cell, scale));
     if (found == cache.end())
       return nullptr;
-    if (dim == 2)
+    if (scale_exponent == 0.)
       return &found->second;
     scaled = found->second;
-    scaled *= std::pow(scale, dim - 2.);
+    scaled *= std::pow(scale, scale_exponent);
     return &scaled;
   }
 
@@ -110,15 +167,16 @@ namespace signorini
             compute(fe_values, scaled);
             return scaled;
           }
-        // Stored for the unit scale: K(s x) = s^(dim-2) K(x).
+        // Stored for the unit scale: K(s x) = s^(dim-2) K(x) (s^1 in an
+        // axisymmetric model).
         found = cache.emplace(shape, FullMatrix<double>()).first;
         compute(fe_values, found->second);
-        found->second *= std::pow(scale, 2. - dim);
+        found->second *= std::pow(scale, -scale_exponent);
       }
-    if (dim == 2)
+    if (scale_exponent == 0.)
       return found->second;
     scaled = found->second;
-    scaled *= std::pow(scale, dim - 2.);
+    scaled *= std::pow(scale, scale_exponent);
     return scaled;
   }
 
@@ -134,6 +192,24 @@ namespace signorini
     fe_values[displacement].get_function_symmetric_gradients(u, strain);
     internal             = 0;
     double strain_energy = 0.;
+    if (material.axisymmetric())
+      {
+        std::vector<Tensor<1, dim>> values(fe_values.n_quadrature_points);
+        fe_values[displacement].get_function_values(u, values);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &x   = fe_values.quadrature_point(q);
+            const double      JxW = fe_values.JxW(q) * axisymmetry::weight(x);
+            const auto        revolved =
+              axisymmetry::revolved_strain<dim>(strain[q], values[q][0] / x[0]);
+            const auto stress = material.template stress<3>(revolved);
+            strain_energy += 0.5 * (revolved * stress) * JxW;
+            for (unsigned int i = 0; i < internal.size(); ++i)
+              internal(i) +=
+                revolved_shape_strain(fe_values, i, q) * stress * JxW;
+          }
+        return strain_energy;
+      }
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const auto stress = material.template stress<dim>(strain[q]);

@@ -8,8 +8,10 @@ namespace signorini
 
   namespace
   {
-    const Choices<bool> plane_states{{false, "plane strain"},
-                                     {true, "plane stress"}};
+    const Choices<Material::PlaneState> plane_states{
+      {Material::PlaneState::plane_strain, "plane strain"},
+      {Material::PlaneState::plane_stress, "plane stress"},
+      {Material::PlaneState::axisymmetric, "axisymmetric"}};
   } // namespace
 
   void
@@ -27,10 +29,15 @@ namespace signorini
       Patterns::Double(-1., 0.5),
       "Poisson's ratio nu [-], between -1 and 0.5 (exclusive).");
     prm.declare_entry("Plane state",
-                      plane_states.name(defaults.plane_stress),
+                      plane_states.name(defaults.plane_state),
                       plane_states.pattern(),
-                      "2D only: plane strain (thick body, eps_zz = 0) or plane "
-                      "stress (thin plate, sigma_zz = 0).");
+                      "2D only: plane strain (thick body, eps_zz = 0), plane "
+                      "stress (thin plate, sigma_zz = 0) or axisymmetric (a "
+                      "body of revolution about the y axis: x is the radius r "
+                      ">= 0 and y the axial coordinate z; the hoop strain is "
+                      "u_r / r, nodes on the axis x = 0 get u_r = 0 by "
+                      "themselves, and every force is that of the whole "
+                      "revolution [N]).");
     prm.leave_subsection();
   }
 
@@ -40,7 +47,7 @@ namespace signorini
     prm.enter_subsection("Material");
     young_modulus = prm.get_double("Young's modulus");
     poisson_ratio = prm.get_double("Poisson's ratio");
-    plane_stress =
+    plane_state =
       plane_states.value(prm.get("Plane state"), "Material/Plane state");
     prm.leave_subsection();
     if (!(young_modulus > 0))
@@ -64,7 +71,7 @@ namespace signorini
   {
     const double lambda = young_modulus * poisson_ratio /
                           ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
-    if (dim == 2 && plane_stress)
+    if (dim == 2 && plane_state == PlaneState::plane_stress)
       return 2. * lambda * mu() / (lambda + 2. * mu());
     return lambda;
   }
@@ -81,7 +88,7 @@ namespace signorini
   double
   Material::out_of_plane_stress(const SymmetricTensor<2, dim> &strain) const
   {
-    if (dim != 2 || plane_stress)
+    if (dim != 2 || plane_state == PlaneState::plane_stress)
       return 0.;
     return lambda<dim>() * trace(strain);
   }

@@ -42,7 +42,7 @@ namespace signorini
       if (cell->is_locally_owned())
         cells.push_back(cell);
 
-    const std::vector<std::string> names = DisplacementFields<dim>::names();
+    const std::vector<std::string> names = in.fields.names();
     VtuPiece                       piece;
     piece.fields.push_back({"displacement", 3, {}});
     for (const auto &name : names)

@@ -88,8 +88,9 @@ namespace signorini
                   double p_h = 0.;
                   for (unsigned int i = 0; i < n; ++i)
                     p_h += nodal[i] * fe_face_values.shape_value(i, q);
-                  const double JxW = fe_face_values.JxW(q);
-                  const auto  &x   = fe_face_values.quadrature_point(q);
+                  const auto  &x = fe_face_values.quadrature_point(q);
+                  const double JxW =
+                    fe_face_values.JxW(q) * discretisation.weight(x);
                   integral += p_h * JxW;
                   obstacle.gap(x, normal);
                   resultant += p_h * JxW * normal;

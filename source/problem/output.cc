@@ -76,7 +76,12 @@ namespace signorini
         }
     active        = Utilities::MPI::sum(active, mpi_communicator);
     contact_force = Utilities::MPI::sum(contact_force, mpi_communicator);
-    penetration   = Utilities::MPI::max(penetration, mpi_communicator);
+    // The radial forces of a whole revolution cancel: its resultants are
+    // axial (the sums of the radial nodal forces are not resultants).
+    const bool revolution = discretisation.axisymmetric();
+    if (revolution)
+      contact_force[0] = 0.;
+    penetration = Utilities::MPI::max(penetration, mpi_communicator);
     row.add_count("active_set", active);
     strategy->report(row, pcout);
     for (unsigned int d = 0; d < dim; ++d)
@@ -94,13 +99,19 @@ namespace signorini
 
     const auto probes =
       evaluate_probes(discretisation, solution, parameters.output.probe_points);
-    const auto zone = evaluate_contact_zone(discretisation,
-                                            contact_surface,
-                                            *obstacle,
-                                            pressure,
-                                            parameters.reference);
-    const auto balance =
+    auto zone = evaluate_contact_zone(discretisation,
+                                      contact_surface,
+                                      *obstacle,
+                                      pressure,
+                                      parameters.reference);
+    auto balance =
       evaluate_balance(discretisation, loads, parameters.material, solution);
+    if (revolution)
+      {
+        balance.applied_force[0]    = 0.;
+        balance.support_reaction[0] = 0.;
+        zone.pressure_resultant[0]  = 0.;
+      }
     row.add("max_pressure", zone.max_pressure);
     row.add("contact_width", zone.contact_width);
     for (unsigned int d = 0; d < dim; ++d)
@@ -192,7 +203,10 @@ namespace signorini
     VectorType active(owned_dofs, relevant_dofs, mpi_communicator);
     active = owned_active;
 
-    const DisplacementFields<dim> fields(parameters.material, *obstacle);
+    const DisplacementFields<dim> fields(parameters.material,
+                                         *obstacle,
+                                         axisymmetry::axis_tolerance(
+                                           discretisation.body_size()));
     const std::vector<double>     relevant_displacement =
       relevant_entries(solution, relevant_dofs);
     const std::vector<double> relevant_pressure =
