@@ -88,7 +88,7 @@ namespace signorini
                                      fe,
                                      discretisation.face_quadrature(),
                                      update_values | update_JxW_values |
-                                       update_quadrature_points);
+                                       discretisation.weight_flags());
     Vector<double>    cell_mass(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell :
@@ -103,9 +103,9 @@ namespace signorini
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
-                  cell_mass(i) +=
-                    fe_face_values.shape_value(i, q) * fe_face_values.JxW(q) *
-                    discretisation.weight(fe_face_values.quadrature_point(q));
+                  cell_mass(i) += fe_face_values.shape_value(i, q) *
+                                  fe_face_values.JxW(q) *
+                                  discretisation.weight(fe_face_values, q);
               cell->get_dof_indices(dof_indices);
               constraints.distribute_local_to_global(cell_mass,
                                                      dof_indices,

@@ -3,8 +3,6 @@
 #include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/cell_stiffness.h>
 
-#include <cmath>
-
 namespace signorini
 {
   using namespace dealii;
@@ -69,7 +67,7 @@ namespace signorini
   template <int dim>
   CellStiffness<dim>::CellStiffness(const Material &material)
     : material(material)
-    , scale_exponent(dim - 2. + (material.axisymmetric() ? 1. : 0.))
+    , scales_linearly(dim == 3 || material.axisymmetric())
   {
   }
 
@@ -138,10 +136,10 @@ namespace signorini
     const auto found = cache.find(shape_of(cell, scale));
     if (found == cache.end())
       return nullptr;
-    if (scale_exponent == 0.)
+    if (!scales_linearly)
       return &found->second;
     scaled = found->second;
-    scaled *= std::pow(scale, scale_exponent);
+    scaled *= scale;
     return &scaled;
   }
 
@@ -167,16 +165,17 @@ namespace signorini
             compute(fe_values, scaled);
             return scaled;
           }
-        // Stored for the unit scale: K(s x) = s^(dim-2) K(x) (s^1 in an
+        // Stored for the unit scale: K(s x) = s^(dim-2) K(x) (s K(x) in an
         // axisymmetric model).
         found = cache.emplace(shape, FullMatrix<double>()).first;
         compute(fe_values, found->second);
-        found->second *= std::pow(scale, -scale_exponent);
+        if (scales_linearly)
+          found->second *= 1. / scale;
       }
-    if (scale_exponent == 0.)
+    if (!scales_linearly)
       return found->second;
     scaled = found->second;
-    scaled *= std::pow(scale, scale_exponent);
+    scaled *= scale;
     return scaled;
   }
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -117,6 +118,26 @@ namespace signorini
     weight(const dealii::Point<dim> &x) const
     {
       return axisymmetric_model ? axisymmetry::weight(x) : 1.;
+    }
+
+    /** The weight at quadrature point @p q of @p values, which has the
+     * flags of weight_flags(). */
+    double
+    weight(const dealii::FEValuesBase<dim> &values, const unsigned int q) const
+    {
+      return axisymmetric_model ?
+               axisymmetry::weight(values.quadrature_point(q)) :
+               1.;
+    }
+
+    /** What FEValues must compute for weight(values, q): the quadrature
+     * points of an axisymmetric model, nothing otherwise (asking a mapping
+     * for points can change its Jacobians in the last bit). */
+    dealii::UpdateFlags
+    weight_flags() const
+    {
+      return axisymmetric_model ? dealii::update_quadrature_points :
+                                  dealii::update_default;
     }
 
     const dealii::Triangulation<dim> &

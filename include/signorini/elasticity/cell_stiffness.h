@@ -73,9 +73,9 @@ namespace signorini
              double &scale) const;
 
     const Material &material;
-    /** The matrix of a cell scaled by s is s^scale_exponent times the
-     * unscaled one's. */
-    const double                                scale_exponent;
+    /** Whether the matrix of a cell scaled by s is s times the unscaled
+     * one's (3D, axisymmetric), or the same (2D plane states). */
+    const bool                                  scales_linearly;
     std::map<Shape, dealii::FullMatrix<double>> cache;
     unsigned int                                lookups = 0;
     dealii::FullMatrix<double>                  scaled;
