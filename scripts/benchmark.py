@@ -16,6 +16,11 @@ scene at more than 200k dofs on one and two processes.
 Prints the tables and rewrites the README's sections between
 <!-- begin benchmark --> and <!-- end benchmark --> (and benchmark-3d).
 Runs go to build/benchmark/.
+
+For the test suite only: with SIGNORINI_SMOKE=FOLDER (see scripts/common.py)
+every run has at most two cycles, the default is one repeat, each table
+but the 2D Hertz line measures its first case only, step-42 is neither built
+nor run, and the README rewritten is FOLDER/README.md, a copy.
 """
 import os
 import re
@@ -28,7 +33,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
 
-WORK = os.path.join(common.ROOT, "build", "benchmark")
+WORK = common.work_folder("benchmark")
 
 # (name, scene, overrides): the default scene with each method, then the
 # other shipped scenes as they are.
@@ -159,7 +164,8 @@ def run_step42(folder, repeat):
 def three_d(repeat):
     """The 3D and parallel figures; returns the README section."""
     rows = []
-    for name, scene, overrides in CASES_3D:
+    cases = CASES_3D[:1] if common.SMOKE else CASES_3D
+    for name, scene, overrides in cases:
         for processes in (1, 2):
             last = measure("%s_np%d" % (name, processes), scene, overrides,
                            repeat, processes)[-1]
@@ -188,7 +194,11 @@ def three_d(repeat):
           "%.2f" % ("{:,}".format(int(large[2]["dofs"])), large_text,
                     speedup))
 
-    step42 = run_step42(build_step42(), repeat)
+    if common.SMOKE:
+        print("step-42: not built in smoke mode", file=sys.stderr)
+        step42 = (float("nan"), float("nan"))
+    else:
+        step42 = run_step42(build_step42(), repeat)
     ours = whole_runs("indentation_step42_np2", "prm/sphere_indentation.prm",
                       {}, repeat, 2)
     versus = step42[0] / ours["wall"]
@@ -197,7 +207,9 @@ def three_d(repeat):
           (step42[0], step42[1], ours["wall"], ours["force"], versus))
 
     shares = []
-    for scene in sorted(os.listdir(os.path.join(common.ROOT, "prm"))):
+    scenes = sorted(s for s in os.listdir(os.path.join(common.ROOT, "prm"))
+                    if s.endswith(".prm"))
+    for scene in scenes[:1] if common.SMOKE else scenes:
         if scene.endswith(".prm"):
             r = whole_runs("output_" + scene[:-4], "prm/" + scene, {},
                            repeat, 0, long_run=100.)
@@ -243,7 +255,7 @@ def three_d(repeat):
 
 
 def main():
-    repeat, parts = 3, {"2d", "3d"}
+    repeat, parts = 1 if common.SMOKE else 3, {"2d", "3d"}
     arguments = sys.argv[1:]
     while arguments:
         if arguments[0] == "--repeat" and len(arguments) > 1:
@@ -262,7 +274,7 @@ def main():
         sections["benchmark-3d"] = three_d(repeat)
     if "2d" in parts:
         sections["benchmark"] = two_d(repeat)
-    common.replace_sections(os.path.join(common.ROOT, "README.md"), sections)
+    common.replace_sections(common.output_file("README.md"), sections)
 
 
 def two_d(repeat):
@@ -271,7 +283,7 @@ def two_d(repeat):
               "linear solve [s]", "ratio", "peak memory [MB]"]
     finals = []
     detail = ""
-    for name, scene, overrides in CASES:
+    for name, scene, overrides in CASES[:1] if common.SMOKE else CASES:
         rows = measure(name, scene, overrides, repeat)
         text = common.table(header, [
             ["%d" % r["cycle"], "{:,}".format(int(r["dofs"])),

@@ -1,25 +1,83 @@
 """What scripts/validation, scripts/benchmark and scripts/work-precision
-share: building, running a scene with overrides, tables and charts."""
+share: building, running a scene with overrides, tables and charts.
+
+Smoke mode, for the test suite only (tests/scripts/): with the environment
+variable SIGNORINI_SMOKE=FOLDER a script builds and installs nothing, runs
+every scene on at most SMOKE_CYCLES cycles, once, on the first mesh or
+value of each sweep, puts its runs in FOLDER, and rewrites copies of the
+README and doc/ files it is documented to rewrite, in FOLDER (README.md,
+doc/NAME), instead of the tracked files. It checks that the pipeline runs
+and touches nothing else; its numbers mean nothing."""
 import csv
 import os
 import re
 import subprocess
 import sys
+import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DOC = os.path.join(ROOT, "doc")
 SIGNORINI = os.path.join(ROOT, "build", "signorini")
+SMOKE = os.path.abspath(os.environ["SIGNORINI_SMOKE"]) \
+    if os.environ.get("SIGNORINI_SMOKE") else None
+SMOKE_CYCLES = 2
+
+
+def work_folder(name):
+    """Where a script's runs go: build/NAME, or FOLDER/NAME in smoke
+    mode."""
+    return os.path.join(SMOKE or os.path.join(ROOT, "build"), name)
+
+
+def output_file(relative):
+    """The file `relative` to the repository (README.md, doc/NAME) that a
+    script rewrites: itself, or in smoke mode its copy in the smoke
+    folder (copied from the repository's on first use)."""
+    if not SMOKE:
+        return os.path.join(ROOT, relative)
+    path = os.path.join(SMOKE, relative)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    original = os.path.join(ROOT, relative)
+    if not os.path.lexists(path) and os.path.isfile(original):
+        with open(original, "rb") as source:
+            write_file(path, source.read())
+    return path
+
+
+def write_file(path, content):
+    """Writes `content` (str or bytes) to `path` whole: into a new file
+    beside it, renamed over it, so that a link at `path` is replaced, never
+    written through."""
+    folder = os.path.dirname(os.path.abspath(path))
+    descriptor, temporary = tempfile.mkstemp(dir=folder, prefix=".tmp-")
+    try:
+        with os.fdopen(descriptor, "wb" if isinstance(content, bytes)
+                       else "w") as out:
+            out.write(content)
+        os.chmod(temporary, 0o644)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise
 
 
 def ensure_tools(tools=(("gnuplot-nox", "gnuplot"),)):
     """Builds the program and installs the Debian packages of `tools`
-    ((package, command) pairs) whose command is missing."""
-    subprocess.run([os.path.join(ROOT, "scripts", "build")], check=True,
-                   stdout=sys.stderr)
+    ((package, command) pairs) whose command is missing. In smoke mode it
+    only checks that they are there."""
     missing = [p for p, tool in tools
                if subprocess.run(["sh", "-c", "command -v " + tool],
                                  stdout=subprocess.DEVNULL).returncode]
+    if SMOKE:
+        if missing or not os.access(SIGNORINI, os.X_OK):
+            sys.exit("%s: smoke mode builds and installs nothing, and %s "
+                     "is missing" % (sys.argv[0], ", ".join(
+                         missing or [SIGNORINI])))
+        return
+    subprocess.run([os.path.join(ROOT, "scripts", "build")], check=True,
+                   stdout=sys.stderr)
     if missing:
         env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
         subprocess.run(["apt-get", "update", "-qq"], check=True, env=env)
@@ -53,6 +111,11 @@ def run(work, name, base, settings, check=True, processes=0):
         if os.path.exists(os.path.join(folder, old)):
             os.remove(os.path.join(folder, old))
     settings = dict(settings)
+    if SMOKE:
+        refinement = dict(settings.get("Mesh refinement", {}))
+        cycles = int(refinement.get("Number of cycles", SMOKE_CYCLES))
+        refinement["Number of cycles"] = str(min(cycles, SMOKE_CYCLES))
+        settings["Mesh refinement"] = refinement
     output = {"Print timings": "false", "Verbose": "false"}
     output.update(settings.get("Output", {}))
     output["Directory"] = folder
@@ -73,12 +136,7 @@ def run(work, name, base, settings, check=True, processes=0):
     # Named apart from the scene files linked above, and never written
     # through a link: a run must not touch the files it was given.
     prm = os.path.join(work, name + "-run.prm")
-    if os.path.islink(prm):
-        os.unlink(prm)
-    descriptor = os.open(prm, os.O_WRONLY | os.O_CREAT | os.O_TRUNC |
-                         os.O_NOFOLLOW, 0o644)
-    with os.fdopen(descriptor, "w") as out:
-        out.write("\n".join(lines) + "\n")
+    write_file(prm, "\n".join(lines) + "\n")
     print("  " + name, file=sys.stderr)
     command = [SIGNORINI, prm]
     env = None
@@ -124,9 +182,8 @@ def write_data(work, name, rows, columns):
     """Writes the `columns` of `rows` as a gnuplot data file; returns its
     path."""
     path = os.path.join(work, name + ".dat")
-    with open(path, "w") as out:
-        for row in rows:
-            out.write(" ".join("%.10g" % row[c] for c in columns) + "\n")
+    write_file(path, "".join(" ".join("%.10g" % row[c] for c in columns) +
+                             "\n" for row in rows))
     return path
 
 
@@ -154,6 +211,4 @@ def replace_sections(path, sections):
         if not pattern.search(text):
             sys.exit("%s: %s has no section '%s'" % (sys.argv[0], path, name))
         text = pattern.sub(lambda m: m.group(1) + body + m.group(2), text)
-    with open(path + ".tmp", "w") as f:
-        f.write(text)
-    os.replace(path + ".tmp", path)
+    write_file(path, text)

@@ -306,7 +306,7 @@ def render_plain(reader, n_cycles, times):
         ground.SetRepresentationType("Wireframe")
         ground.LineWidth = 4
     else:
-        ground.Opacity = 0.8 if window < size else 0.5
+        ground.Opacity = 0.5
 
     caption = "%s: cycle %d, %d cells; displacement to scale" % (
         title, n_cycles - 1, n_cells)

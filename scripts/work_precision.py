@@ -14,6 +14,11 @@ and draws error against time, log-log, one curve per method and refinement.
                                      what the ctest runs
 
 Runs go to build/work-precision/ (or build/work-precision-quick/).
+
+For the test suite only: with SIGNORINI_SMOKE=FOLDER (see scripts/common.py)
+every run has at most two cycles, penalty runs with one epsilon (as in
+--quick), the stability map tries the first value of the first method, and
+the tables and charts are written to copies in FOLDER/doc/.
 """
 import math
 import os
@@ -85,7 +90,7 @@ def sweep(work, quick):
     results = {}
     for scene, (_, prm, _, extra, epsilons, cycles, quick_cycles) in \
             SCENES.items():
-        for label, contact in methods(epsilons, quick):
+        for label, contact in methods(epsilons, quick or common.SMOKE):
             for refinement in ("kelly", "global"):
                 settings = dict(extra)
                 settings["Contact"] = contact
@@ -223,8 +228,8 @@ def main():
     quick = sys.argv[1:] == ["--quick"]
     if sys.argv[1:] not in ([], ["--quick"]):
         sys.exit(__doc__)
-    work = os.path.join(common.ROOT, "build",
-                        "work-precision-quick" if quick else "work-precision")
+    work = common.work_folder("work-precision-quick" if quick
+                              else "work-precision")
     os.makedirs(work, exist_ok=True)
     if not quick:
         common.ensure_tools()
@@ -242,12 +247,12 @@ def main():
         print("work-precision --quick: %d runs, all checks passed" %
               len(results))
         return
-    chart(work, results, os.path.join(common.DOC, "work-precision.png"))
+    chart(work, results, common.output_file("doc/work-precision.png"))
     p1 = p1_table(results)
     print(p1)
-    common.replace_sections(os.path.join(common.DOC, "work-precision.md"),
+    common.replace_sections(common.output_file("doc/work-precision.md"),
                             {"final-cycles": text, "p1-cycles": p1})
-    stability.main(os.path.join(common.ROOT, "build", "stability"))
+    stability.main(common.work_folder("stability"))
 
 
 if __name__ == "__main__":

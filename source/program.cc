@@ -6,13 +6,20 @@
 #include <signorini/input/input_error.h>
 #include <signorini/input/parameter_file.h>
 #include <signorini/input/parameters.h>
+#include <signorini/input/text_check.h>
 #include <signorini/problem/contact_problem.h>
 #include <signorini/program.h>
 
+#include <cerrno>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace signorini
 {
@@ -31,19 +38,154 @@ namespace signorini
       "                                    documentation\n"
       "       signorini --help            show this text\n"
       "Run in parallel with: mpirun -np N signorini FILE.prm\n"
-      "Exit status: 0 success, 1 bad input, 2 contact solver did not converge,\n"
-      "3 active set cycling, 4 linear solver failed, 5 other error,\n"
-      "6 contact solver stalled, 7 augmented Lagrangian multipliers too slow.\n";
+      "Exit status: 0 success, 1 bad input or command line, 2 contact solver\n"
+      "did not converge, 3 active set cycling, 4 linear solver failed, 5 other\n"
+      "error (out of memory, a file that cannot be written), 6 contact solver\n"
+      "stalled, 7 augmented Lagrangian multipliers too slow.\n";
+
+    /** What the command line asks for. */
+    struct Command
+    {
+      enum class Action
+      {
+        run,
+        print_parameters,
+        help
+      };
+      Action      action = Action::run;
+      bool        resume = false;
+      std::string file;
+      std::string dimension = "2";
+    };
+
+    /** A mistake on the command line, reported with the usage. */
+    class UsageError : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    /** The options of mpirun that a user may give signorini instead. */
+    bool
+    is_mpirun_option(const std::string &argument)
+    {
+      for (const char *option : {"-np",
+                                 "-n",
+                                 "--np",
+                                 "--n",
+                                 "-c",
+                                 "-N",
+                                 "-H",
+                                 "--host",
+                                 "--hostfile",
+                                 "--oversubscribe",
+                                 "--map-by",
+                                 "--bind-to"})
+        if (argument == option)
+          return true;
+      return false;
+    }
+
+    /** The command of @p arguments; throws a UsageError. */
+    Command
+    parse_command_line(const std::vector<std::string> &arguments)
+    {
+      Command command;
+      for (const auto &argument : arguments)
+        if (argument == "--help" || argument == "-h")
+          {
+            command.action = Command::Action::help;
+            return command;
+          }
+      for (std::size_t i = 0; i < arguments.size(); ++i)
+        {
+          const std::string &argument = arguments[i];
+          if (argument == "--resume")
+            {
+              if (command.resume)
+                throw UsageError("--resume is given twice");
+              if (!command.file.empty())
+                throw UsageError("--resume comes before the parameter file: "
+                                 "signorini --resume " +
+                                 command.file);
+              command.resume = true;
+            }
+          else if (argument == "--print-parameters")
+            {
+              command.action = Command::Action::print_parameters;
+              if (i + 1 < arguments.size() && !arguments[i + 1].empty() &&
+                  arguments[i + 1][0] != '-')
+                {
+                  const std::string &next = arguments[++i];
+                  if (next != "2" && next != "3")
+                    throw UsageError(
+                      "--print-parameters takes a dimension, 2 or 3, not '" +
+                      next + "'" +
+                      (std::filesystem::exists(next) ?
+                         " (it prints the defaults, not a file's entries)" :
+                         ""));
+                  command.dimension = next;
+                }
+            }
+          else if (is_mpirun_option(argument))
+            throw UsageError("'" + argument +
+                             "' is an option of mpirun, not of signorini: "
+                             "mpirun -np N signorini FILE.prm");
+          else if (argument.size() > 1 && argument[0] == '-')
+            throw UsageError("unknown option '" + argument + "'");
+          else if (argument.empty())
+            throw UsageError("an empty argument where a parameter file is "
+                             "expected");
+          else if (!command.file.empty())
+            throw UsageError("expected one parameter file, got '" +
+                             command.file + "' and '" + argument + "'");
+          else
+            command.file = argument;
+        }
+      if (command.action == Command::Action::print_parameters &&
+          (!command.file.empty() || command.resume))
+        throw UsageError(
+          "--print-parameters prints the defaults and takes no " +
+          std::string(command.resume ?
+                        "--resume" :
+                        "parameter file ('" + command.file + "')"));
+      if (command.action == Command::Action::run && command.file.empty())
+        throw UsageError(command.resume ? "--resume needs a parameter file" :
+                                          "expected a parameter file");
+      return command;
+    }
+
+    /** The number of cycles that statistics.csv in @p directory lists. */
+    unsigned int
+    listed_cycles(const std::string &directory)
+    {
+      std::ifstream in(directory + "/statistics.csv");
+      std::string   line;
+      unsigned int  n = 0;
+      while (std::getline(in, line))
+        ++n;
+      return n > 0 ? n - 1 : 0;
+    }
 
     template <int dim>
     void
-    run_scene(const ParameterFile &input, const bool resume)
+    run_scene(const ParameterFile &input,
+              const std::string   &file,
+              const bool           resume)
     {
       ParameterHandler prm;
       declare_parameters(prm, dim);
       input.parse(prm);
       Parameters<dim> parameters;
       parameters.parse_parameters(prm, input.folders());
+      ConditionalOStream err(std::cerr,
+                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
+                               0);
+      for (const auto &warning : take_warnings())
+        err << text_check::printable("signorini: warning: " + file +
+                                     ": entry '" + warning.entry +
+                                     "': " + warning.message)
+            << std::endl;
       // The problem is destroyed before a failure propagates, so that its
       // timer does not finish while an exception is in flight.
       std::exception_ptr failure;
@@ -59,88 +201,120 @@ namespace signorini
           }
       }
       if (failure)
-        std::rethrow_exception(failure);
+        try
+          {
+            std::rethrow_exception(failure);
+          }
+        catch (const std::bad_alloc &)
+          {
+            const std::string &directory = parameters.output.directory;
+            throw SolverFailure(
+              exit_status::other,
+              "out of memory on cycle " +
+                std::to_string(listed_cycles(directory)) +
+                " (the cycles "
+                "before it are in " +
+                directory +
+                "; fewer Mesh "
+                "refinement/Number of cycles or a smaller Mesh "
+                "refinement/Refine fraction need less)");
+          }
+    }
+
+    /** "signorini: error: WHAT", fit for a terminal. */
+    std::string
+    error_line(const std::string &what)
+    {
+      return text_check::printable("signorini: error: " + what);
     }
   } // namespace
 
   int
   run_program(int argc, char **argv)
   {
-    ConditionalOStream             out(std::cout,
-                           Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
-                             0);
-    ConditionalOStream             err(std::cerr,
-                           Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
-                             0);
+    const bool first = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    ConditionalOStream             out(std::cout, first);
+    ConditionalOStream             err(std::cerr, first);
     const std::vector<std::string> arguments(argv + 1, argv + argc);
-    if (arguments.size() == 1 &&
-        (arguments[0] == "--help" || arguments[0] == "-h"))
+    Command                        command;
+    try
+      {
+        command = parse_command_line(arguments);
+      }
+    catch (const UsageError &error)
+      {
+        err << error_line(error.what()) << '\n' << usage;
+        return exit_status::input_error;
+      }
+    if (command.action == Command::Action::help)
       {
         out << usage;
         return exit_status::success;
       }
-
-    if (!arguments.empty() && arguments[0] == "--print-parameters")
+    if (command.action == Command::Action::print_parameters)
       {
-        const std::string dim = arguments.size() == 2 ? arguments[1] : "2";
-        if (arguments.size() > 2 || (dim != "2" && dim != "3"))
-          {
-            err << "signorini: error: --print-parameters takes a dimension, "
-                   "2 or 3\n"
-                << usage;
-            return exit_status::input_error;
-          }
         ParameterHandler prm;
-        declare_parameters(prm, std::stoi(dim));
-        prm.set("Dimension", dim);
-        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        declare_parameters(prm, std::stoi(command.dimension));
+        prm.set("Dimension", command.dimension);
+        if (first)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return exit_status::success;
       }
-    const bool resume = arguments.size() == 2 && arguments[0] == "--resume";
-    const std::string file = arguments.empty() ? "" : arguments.back();
-    if (arguments.size() != (resume ? 2 : 1) || file.empty() || file[0] == '-')
-      {
-        err << "signorini: error: expected one parameter file\n" << usage;
-        return exit_status::input_error;
-      }
 
+    const std::string &file = command.file;
     try
       {
-        if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
-          throw InputError::at(file, "cannot open the parameter file");
+        std::error_code error;
+        const auto      status = std::filesystem::status(file, error);
+        if (error)
+          throw InputError::at(file,
+                               "cannot open the parameter file: " +
+                                 error.message());
+        if (std::filesystem::is_directory(status))
+          throw InputError::at(file, "is a directory, not a parameter file");
+        if (!std::filesystem::is_regular_file(status))
+          throw InputError::at(file, "is not a regular file");
+        if (!std::ifstream(file))
+          throw InputError::at(file,
+                               std::string("cannot open the parameter file: ") +
+                                 std::strerror(errno));
         const ParameterFile input(file);
         if (read_dimension(input) == 2)
-          run_scene<2>(input, resume);
+          run_scene<2>(input, file, command.resume);
         else
-          run_scene<3>(input, resume);
+          run_scene<3>(input, file, command.resume);
         return exit_status::success;
       }
     catch (const InputError &error)
       {
-        err << "signorini: error: "
-            << (error.location.empty() ? file : error.location);
-        if (!error.entry.empty())
-          err << ": entry '" << error.entry << "'";
-        err << ": " << error.what() << std::endl;
+        err << error_line((error.location.empty() ? file : error.location) +
+                          (error.entry.empty() ?
+                             std::string() :
+                             ": entry '" + error.entry + "'") +
+                          ": " + error.what())
+            << std::endl;
         return exit_status::input_error;
       }
     catch (const SolverFailure &failure)
       {
-        err << "signorini: error: " << failure.what() << std::endl;
+        err << error_line(failure.what()) << std::endl;
         return failure.status;
       }
     catch (const ExceptionBase &error)
       {
-        err << "signorini: error: " << one_line(error) << std::endl;
+        err << error_line(one_line(error)) << std::endl;
+      }
+    catch (const std::bad_alloc &)
+      {
+        err << error_line("out of memory before cycle 0") << std::endl;
       }
     catch (const std::exception &error)
       {
-        err << "signorini: error: " << error.what() << std::endl;
+        err << error_line(error.what()) << std::endl;
       }
     catch (...)
       {
-        err << "signorini: error: unknown failure" << std::endl;
+        err << error_line("unknown failure") << std::endl;
       }
     return exit_status::other;
   }

@@ -2,6 +2,8 @@
 # Test driver: run_case.sh SIGNORINI FILE.prm
 # Prints the program's output, its exit status, the statistics table it wrote,
 # and the verdict of every check listed in FILE.checks (if that file exists).
+# If FILE.args exists, its words are the program's arguments instead of
+# FILE.prm (the word FILE stands for FILE.prm): a test of the command line.
 # A check line reads   ROW COLUMN OP VALUE [TOLERANCE]
 #   ROW:   a cycle number, `last` or `all`; or `rate` (`rate:K`): the check
 #          is on the observed rate, the least-squares slope of log COLUMN
@@ -14,10 +16,17 @@ program=$1
 prm=$2
 # deal.II's test runner keeps a file `output` here: run one folder down.
 rm -rf run && mkdir run && cd run || exit 1
-"$program" "$prm" > run.log 2>&1
+if [ -f "${prm%.prm}.args" ]; then
+  # shellcheck disable=SC2046 # the words of the file are the arguments
+  "$program" $(sed "s|FILE|$prm|g" "${prm%.prm}.args") > run.log 2>&1
+else
+  "$program" "$prm" > run.log 2>&1
+fi
 status=$?
-# Messages name files by absolute path; keep the output independent of it.
-sed "s|$(dirname "$prm")/||g" run.log
+# Messages name files by absolute path, and the memory of the machine; keep
+# the output independent of both.
+sed -e "s|$(dirname "$prm")/||g" \
+  -e 's|[0-9.e+]* GB are available|(machine) GB are available|' run.log
 echo "exit status: $status"
 stats=$(find output -name statistics.csv 2>/dev/null | head -n 1)
 [ -d output ] && { echo "files written:"; find output -type f | sort; }

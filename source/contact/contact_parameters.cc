@@ -100,5 +100,20 @@ namespace signorini
     max_iterations           = prm.get_integer("Maximum iterations");
     tolerance                = prm.get_double("Tolerance");
     prm.leave_subsection();
+    const auto relative = parse::Range::open(0., 1.);
+    parse::in_range(tolerance,
+                    relative,
+                    "Contact/Tolerance",
+                    "a residual relative to the load");
+    parse::in_range(multiplier_tolerance,
+                    relative,
+                    "Contact/Multiplier tolerance",
+                    "relative to the peak pressure");
+    parse::in_range(penalty_parameter,
+                    parse::Range::at_least(0.),
+                    "Contact/Penalty parameter");
+    parse::in_range(complementarity_constant,
+                    parse::Range::at_least(0.),
+                    "Contact/Complementarity constant");
   }
 } // namespace signorini

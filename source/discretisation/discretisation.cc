@@ -10,6 +10,7 @@
 
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/input/input_error.h>
+#include <signorini/input/parsed_function.h>
 #include <signorini/mesh_adaptation/mesh_adaptation.h>
 
 #include <algorithm>
@@ -115,6 +116,7 @@ namespace signorini
         *boundary_conditions.prescribed_displacement,
         fixed_constraints,
         mask);
+    check_finite(*boundary_conditions.prescribed_displacement, communicator);
     if (axisymmetric_model)
       axisymmetry::add_axis_constraints(dofs,
                                         relevant_dofs,

@@ -3,12 +3,23 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 
+#include <signorini/base/memory.h>
+#include <signorini/base/text.h>
 #include <signorini/discretisation/geometry.h>
 #include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
+#include <signorini/input/text_check.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
+#include <set>
+#include <sstream>
 
 namespace signorini
 {
@@ -28,6 +39,131 @@ namespace signorini
       {GmshOptions::CellType::automatic, "automatic"},
       {GmshOptions::CellType::quadrilateral, "quadrilateral"},
       {GmshOptions::CellType::simplex, "simplex"}};
+
+    /** Why @p bytes, the content of a .msh file, cannot be a whole ASCII
+     * Gmsh mesh, if they cannot: not text (binary), or a section without
+     * its end (a truncated file), or a section missing. */
+    std::optional<std::string>
+    msh_problem(const std::string &bytes)
+    {
+      std::istringstream in(bytes);
+      std::string        line, version;
+      int                file_type = 0;
+      // "$MeshFormat" and "VERSION FILE-TYPE DATA-SIZE": file-type 1 is
+      // binary.
+      if (std::getline(in, line) && line.rfind("$MeshFormat", 0) == 0 &&
+          (in >> version >> file_type) && file_type == 1)
+        return std::string("is a binary .msh file; save it as ASCII (Gmsh: "
+                           "File > Export, without 'Save in binary format')");
+      if (const auto problem = text_check::first_non_text(bytes))
+        return "is not a mesh: line " + std::to_string(problem->line) +
+               ", column " + std::to_string(problem->column) + ": " +
+               problem->what;
+
+      in.clear();
+      in.seekg(0);
+      std::string           open;
+      unsigned int          number = 0, opened_at = 0, items = 0, listed = 0;
+      std::set<std::string> sections;
+      const auto            at = [&](const unsigned int n) {
+        return "line " + std::to_string(n) + ": ";
+      };
+      while (std::getline(in, line))
+        {
+          ++number;
+          line = Utilities::trim(line);
+          if (line.empty())
+            continue;
+          if (line[0] != '$')
+            {
+              if (!open.empty() && ++items == 1)
+                listed = std::atoi(line.c_str());
+              continue;
+            }
+          if (line.rfind("$End", 0) == 0)
+            {
+              if (line.substr(4) != open)
+                return "is damaged: " + at(number) + line +
+                       (open.empty() ? " ends no section" :
+                                       " in the $" + open + " section");
+              // In format 2, $Nodes and $Elements begin with their count.
+              if ((open == "Nodes" || open == "Elements") &&
+                  version.rfind("2", 0) == 0 && items != listed + 1)
+                return "is damaged: its $" + open + " section (line " +
+                       std::to_string(opened_at) + ") lists " +
+                       std::to_string(listed) + " items on " +
+                       std::to_string(items > 0 ? items - 1 : 0) + " lines";
+              open.clear();
+              continue;
+            }
+          if (!open.empty())
+            return "is damaged: " + at(number) + line + " begins before $End" +
+                   open + " of line " + std::to_string(opened_at);
+          open      = line.substr(1);
+          opened_at = number;
+          items     = 0;
+          sections.insert(open);
+        }
+      if (!open.empty())
+        return "is truncated: it ends at line " + std::to_string(number) +
+               " inside its $" + open + " section (line " +
+               std::to_string(opened_at) + "), before $End" + open;
+      for (const std::string section : {"MeshFormat", "Nodes", "Elements"})
+        if (sections.count(section) == 0)
+          return (section == "MeshFormat" ?
+                    std::string("is not a Gmsh .msh file: ") :
+                    std::string("is truncated or damaged: ")) +
+                 "it has no $" + section + " section";
+      return {};
+    }
+
+    /**
+     * Throws, on every process of @p comm, an InputError naming the entry
+     * that makes the initial mesh too large for the memory the processes
+     * have: the initial refinement if there is one, else the subdivisions
+     * of a rectangle or the mesh file. The mesh has @p n_coarse_cells
+     * (simplices if @p simplex), refined as often as `Initial refinement`
+     * says if @p refined. Each unknown takes 2 kB at least (README:
+     * 2.3 kB per dof in 3D, more in 2D with the direct solver).
+     */
+    template <int dim>
+    void
+    refuse_oversized_mesh(const Geometry<dim> &geometry,
+                          const double         n_coarse_cells,
+                          const bool           simplex,
+                          const bool           refined,
+                          const MPI_Comm       comm)
+    {
+      const unsigned int k = refined ? geometry.initial_refinement : 0;
+      const double n_cells = n_coarse_cells * std::pow(2., double(dim * k));
+      const double vertices_per_cell = simplex ? (dim == 2 ? 0.5 : 1. / 6) : 1.;
+      const double bytes_per_cell    = 2e3 * dim * vertices_per_cell;
+      const double n_dofs            = dim * vertices_per_cell * n_cells;
+      const double needed            = bytes_per_cell * n_cells;
+      const double available         = available_memory(comm);
+      if (needed <= available)
+        return;
+      // The refinements, unless the coarse mesh is too large already.
+      std::string entry = "Geometry/Mesh file", cause;
+      if (k > 0 && bytes_per_cell * n_coarse_cells <= available)
+        {
+          entry = "Geometry/Initial refinement";
+          cause = std::to_string(k) + " refinement" + (k > 1 ? "s" : "") +
+                  " of " + number(n_coarse_cells) + " coarse cells make ";
+        }
+      else if (geometry.type == Geometry<dim>::Type::rectangle)
+        {
+          entry = "Geometry/Subdivisions";
+          cause = "'" + entry_text::of(geometry.subdivisions) + "'" +
+                  (k > 0 ? " refined " + std::to_string(k) + " times" : "") +
+                  " make ";
+        }
+      throw InputError(entry,
+                       cause + number(n_cells) + " cells, about " +
+                         number(n_dofs) + " unknowns, which need at least " +
+                         number(needed / 1e9) + " GB of memory; " +
+                         number(available / 1e9) + " GB are available");
+    }
   } // namespace
 
   template <int dim>
@@ -163,9 +299,16 @@ namespace signorini
                   break;
                 }
           }
+        std::error_code error;
+        if (std::filesystem::is_directory(mesh_file, error))
+          throw InputError("Geometry/Mesh file",
+                           "'" + mesh_file + "' is a directory, not a mesh");
         if (!std::ifstream(mesh_file))
           throw InputError("Geometry/Mesh file",
-                           "cannot open '" + mesh_file + "'");
+                           "cannot open '" + mesh_file + "'" +
+                             (errno != ENOENT ?
+                                std::string(": ") + std::strerror(errno) :
+                                std::string()));
       }
     initial_refinement = prm.get_integer("Initial refinement");
     prm.leave_subsection();
@@ -211,6 +354,10 @@ namespace signorini
       {
         case Type::rectangle:
           {
+            double n_cells = simplex ? (dim == 2 ? 8 : 24) : 1;
+            for (const unsigned int n : subdivisions)
+              n_cells *= n;
+            refuse_oversized_mesh(*this, n_cells, simplex, true, comm);
             Triangulation<dim> quads;
             GridGenerator::subdivided_hyper_rectangle(simplex ? quads :
                                                                 coarse_mesh,
@@ -302,12 +449,24 @@ namespace signorini
               mesh_geometry_file(mesh_file, gmsh_options(), coarse_mesh, comm);
             else
               {
-                std::ifstream input(mesh_file);
+                std::ifstream     file(mesh_file, std::ios::binary);
+                const std::string bytes((std::istreambuf_iterator<char>(file)),
+                                        std::istreambuf_iterator<char>());
+                if (const auto problem = msh_problem(bytes))
+                  throw InputError("Geometry/Mesh file",
+                                   "'" + mesh_file + "' " + *problem);
+                std::istringstream input(bytes);
                 read_msh(input, mesh_file, coarse_mesh);
               }
             break;
           }
       }
+    if (type != Type::rectangle)
+      refuse_oversized_mesh(*this,
+                            coarse_mesh.n_active_cells(),
+                            !coarse_mesh.all_reference_cells_are_hyper_cube(),
+                            !from_geometry_file(),
+                            comm);
   }
 
   template struct Geometry<2>;

@@ -31,15 +31,21 @@ namespace signorini
           0.);
     }
 
-    /** The matrix of an axisymmetric model's cell. */
+    /** The matrix of an axisymmetric model's cell, the integral over the
+     * revolved cell; with @p mean_dilatation, 2 mu eps : eps pointwise and
+     * lambda D_i D_j / V, D_i the integral of the trace of the revolved
+     * strain of phi_i (hoop strain included) and V the revolved volume. */
     template <int dim>
     void
     compute_revolved(const Material      &material,
+                     const bool           mean_dilatation,
                      const FEValues<dim> &fe_values,
                      FullMatrix<double>  &cell_matrix)
     {
       const unsigned int n = fe_values.get_fe().n_dofs_per_cell();
       std::vector<SymmetricTensor<2, 3>> strain(n), stress(n);
+      Vector<double>                     divergence(mean_dilatation ? n : 0);
+      double                             volume = 0.;
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
           const double JxW = fe_values.JxW(q) *
@@ -47,12 +53,77 @@ namespace signorini
           for (unsigned int i = 0; i < n; ++i)
             {
               strain[i] = revolved_shape_strain(fe_values, i, q);
-              stress[i] = material.template stress<3>(strain[i]) * JxW;
+              if (mean_dilatation)
+                {
+                  stress[i] = 2. * material.mu() * JxW * strain[i];
+                  divergence(i) += trace(strain[i]) * JxW;
+                }
+              else
+                stress[i] = material.template stress<3>(strain[i]) * JxW;
             }
+          volume += JxW;
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j <= i; ++j)
               cell_matrix(i, j) += strain[i] * stress[j];
         }
+      if (mean_dilatation)
+        {
+          const double factor = material.template lambda<3>() / volume;
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j <= i; ++j)
+              cell_matrix(i, j) += factor * divergence(i) * divergence(j);
+        }
+    }
+
+    /** cell_internal_force() of an axisymmetric model's cell, with or
+     * without @p mean_dilatation; returns the strain energy. */
+    template <int dim>
+    double
+    revolved_internal_force(const Material      &material,
+                            const bool           mean_dilatation,
+                            const FEValues<dim> &fe_values,
+                            const TrilinosWrappers::MPI::Vector &u,
+                            Vector<double>                      &internal)
+    {
+      const FEValuesExtractors::Vector     displacement(0);
+      const unsigned int                   n_q = fe_values.n_quadrature_points;
+      std::vector<SymmetricTensor<2, dim>> in_plane(n_q);
+      std::vector<Tensor<1, dim>>          values(n_q);
+      fe_values[displacement].get_function_symmetric_gradients(u, in_plane);
+      fe_values[displacement].get_function_values(u, values);
+      const double   mu = material.mu(), lambda = material.template lambda<3>();
+      Vector<double> divergence(internal.size());
+      double         volume = 0., dilatation = 0., strain_energy = 0.;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const Point<dim> &x   = fe_values.quadrature_point(q);
+          const double      JxW = fe_values.JxW(q) * axisymmetry::weight(x);
+          const auto        strain =
+            axisymmetry::revolved_strain<dim>(in_plane[q], values[q][0] / x[0]);
+          if (!mean_dilatation)
+            {
+              const auto stress = material.template stress<3>(strain);
+              strain_energy += 0.5 * (strain * stress) * JxW;
+              for (unsigned int i = 0; i < internal.size(); ++i)
+                internal(i) +=
+                  revolved_shape_strain(fe_values, i, q) * stress * JxW;
+              continue;
+            }
+          volume += JxW;
+          dilatation += trace(strain) * JxW;
+          strain_energy += mu * (strain * strain) * JxW;
+          for (unsigned int i = 0; i < internal.size(); ++i)
+            {
+              const auto strain_i = revolved_shape_strain(fe_values, i, q);
+              internal(i) += 2. * mu * (strain_i * strain) * JxW;
+              divergence(i) += trace(strain_i) * JxW;
+            }
+        }
+      if (!mean_dilatation)
+        return strain_energy;
+      for (unsigned int i = 0; i < internal.size(); ++i)
+        internal(i) += lambda * divergence(i) * dilatation / volume;
+      return strain_energy + 0.5 * lambda * dilatation * dilatation / volume;
     }
   } // namespace
 
@@ -86,24 +157,47 @@ namespace signorini
   {
     const unsigned int               n = fe_values.get_fe().n_dofs_per_cell();
     const FEValuesExtractors::Vector displacement(0);
+    const bool mean_dilatation = material.template mean_dilatation<dim>(
+      fe_values.get_fe().reference_cell().is_simplex());
     std::vector<SymmetricTensor<2, dim>> strain(n), stress(n);
+    // With mean dilatation: the integrals of div phi_i and the cell's
+    // volume; the volumetric part lambda (div u)(div v) of the stiffness is
+    // then lambda D_i D_j / V, and the pointwise part 2 mu eps : eps.
+    Vector<double> divergence(mean_dilatation ? n : 0);
+    double         volume = 0.;
     cell_matrix.reinit(n, n);
     if (material.axisymmetric())
-      compute_revolved(material, fe_values, cell_matrix);
+      compute_revolved(material, mean_dilatation, fe_values, cell_matrix);
     else
-      for (const unsigned int q : fe_values.quadrature_point_indices())
-        {
-          const double JxW = fe_values.JxW(q);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              strain[i] = fe_values[displacement].symmetric_gradient(i, q);
-              stress[i] = material.template stress<dim>(strain[i]) * JxW;
-            }
-          // The matrix is symmetric: the lower triangle, mirrored below.
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j <= i; ++j)
-              cell_matrix(i, j) += strain[i] * stress[j];
-        }
+      {
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                strain[i] = fe_values[displacement].symmetric_gradient(i, q);
+                if (mean_dilatation)
+                  {
+                    stress[i] = 2. * material.mu() * JxW * strain[i];
+                    divergence(i) += trace(strain[i]) * JxW;
+                  }
+                else
+                  stress[i] = material.template stress<dim>(strain[i]) * JxW;
+              }
+            volume += JxW;
+            // The matrix is symmetric: the lower triangle, mirrored below.
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) += strain[i] * stress[j];
+          }
+        if (mean_dilatation)
+          {
+            const double factor = material.template lambda<dim>() / volume;
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) += factor * divergence(i) * divergence(j);
+          }
+      }
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < i; ++j)
         cell_matrix(j, i) = cell_matrix(i, j);
@@ -189,35 +283,48 @@ namespace signorini
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
     fe_values[displacement].get_function_symmetric_gradients(u, strain);
-    internal             = 0;
-    double strain_energy = 0.;
+    internal        = 0;
+    const bool mean = material.template mean_dilatation<dim>(
+      fe_values.get_fe().reference_cell().is_simplex());
     if (material.axisymmetric())
+      return revolved_internal_force(material, mean, fe_values, u, internal);
+    if (!mean)
       {
-        std::vector<Tensor<1, dim>> values(fe_values.n_quadrature_points);
-        fe_values[displacement].get_function_values(u, values);
+        double strain_energy = 0.;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            const Point<dim> &x   = fe_values.quadrature_point(q);
-            const double      JxW = fe_values.JxW(q) * axisymmetry::weight(x);
-            const auto        revolved =
-              axisymmetry::revolved_strain<dim>(strain[q], values[q][0] / x[0]);
-            const auto stress = material.template stress<3>(revolved);
-            strain_energy += 0.5 * (revolved * stress) * JxW;
+            const auto stress = material.template stress<dim>(strain[q]);
+            strain_energy += 0.5 * (strain[q] * stress) * fe_values.JxW(q);
             for (unsigned int i = 0; i < internal.size(); ++i)
-              internal(i) +=
-                revolved_shape_strain(fe_values, i, q) * stress * JxW;
+              internal(i) += fe_values[displacement].symmetric_gradient(i, q) *
+                             stress * fe_values.JxW(q);
           }
         return strain_energy;
       }
+
+    // Mean dilatation: 2 mu eps(phi_i) : eps(u) pointwise, and
+    // lambda D_i Theta / V with D_i, Theta the integrals of div phi_i and
+    // div u over the cell of volume V.
+    const double   mu = material.mu(), lambda = material.template lambda<dim>();
+    Vector<double> divergence(internal.size());
+    double         volume = 0., dilatation = 0., strain_energy = 0.;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        const auto stress = material.template stress<dim>(strain[q]);
-        strain_energy += 0.5 * (strain[q] * stress) * fe_values.JxW(q);
+        const double JxW = fe_values.JxW(q);
+        volume += JxW;
+        dilatation += trace(strain[q]) * JxW;
+        strain_energy += mu * (strain[q] * strain[q]) * JxW;
         for (unsigned int i = 0; i < internal.size(); ++i)
-          internal(i) += fe_values[displacement].symmetric_gradient(i, q) *
-                         stress * fe_values.JxW(q);
+          {
+            const auto strain_i =
+              fe_values[displacement].symmetric_gradient(i, q);
+            internal(i) += 2. * mu * (strain_i * strain[q]) * JxW;
+            divergence(i) += trace(strain_i) * JxW;
+          }
       }
-    return strain_energy;
+    for (unsigned int i = 0; i < internal.size(); ++i)
+      internal(i) += lambda * divergence(i) * dilatation / volume;
+    return strain_energy + 0.5 * lambda * dilatation * dilatation / volume;
   }
 
   template class CellStiffness<2>;

@@ -1,5 +1,6 @@
 #include <signorini/elasticity/linear_solver_parameters.h>
 #include <signorini/input/entry_text.h>
+#include <signorini/input/input_error.h>
 
 #include <algorithm>
 
@@ -56,8 +57,17 @@ namespace signorini
     type           = solver_types.value(prm.get("Type"), "Linear solver/Type");
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
-    newton_tolerance = std::max(prm.get_double("Newton tolerance"), tolerance);
+    newton_tolerance =
+      std::max(parse::in_range(prm.get_double("Newton tolerance"),
+                               parse::Range::closed_open(0., 1.),
+                               "Linear solver/Newton tolerance",
+                               "a residual reduction"),
+               tolerance);
     prm.leave_subsection();
+    parse::in_range(tolerance,
+                    parse::Range::open(0., 1.),
+                    "Linear solver/Tolerance",
+                    "a residual reduction");
   }
 
   LinearSolverParameters::Type

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <signorini/elasticity/loads.h>
+#include <signorini/input/parsed_function.h>
 
 namespace signorini
 {
@@ -110,6 +111,8 @@ namespace signorini
                                                                   load);
         }
     load.compress(VectorOperation::add);
+    check_finite(*bc.body_force, discretisation.mpi_communicator());
+    check_finite(*traction, discretisation.mpi_communicator());
   }
 
   template class Loads<2>;

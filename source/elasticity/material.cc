@@ -1,3 +1,4 @@
+#include <signorini/base/text.h>
 #include <signorini/elasticity/material.h>
 #include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
@@ -12,6 +13,10 @@ namespace signorini
       {Material::PlaneState::plane_strain, "plane strain"},
       {Material::PlaneState::plane_stress, "plane stress"},
       {Material::PlaneState::axisymmetric, "axisymmetric"}};
+    const Choices<Material::VolumetricStrain> volumetric_strains{
+      {Material::VolumetricStrain::automatic, "automatic"},
+      {Material::VolumetricStrain::pointwise, "pointwise"},
+      {Material::VolumetricStrain::cell_mean, "cell mean"}};
   } // namespace
 
   void
@@ -38,6 +43,20 @@ namespace signorini
                       "u_r / r, nodes on the axis x = 0 get u_r = 0 by "
                       "themselves, and every force is that of the whole "
                       "revolution [N]).");
+    prm.declare_entry(
+      "Volumetric strain",
+      volumetric_strains.name(defaults.volumetric_strain),
+      volumetric_strains.pattern(),
+      "How Q1 cells (quadrilaterals, hexahedra) take the volumetric strain "
+      "div u in the stiffness, the internal forces, the energy and the "
+      "stress output. pointwise: the standard displacement element, which "
+      "locks (is far too stiff) as nu -> 0.5. cell mean: div u replaced by "
+      "its mean over the cell (mean dilatation, B-bar), free of locking. "
+      "automatic: cell mean from nu = 0.4 on in plane strain, axisymmetric "
+      "models and 3D, pointwise otherwise. P1 triangles and tetrahedra "
+      "always take it pointwise and lock as nu -> 0.5: a warning says so "
+      "from nu = 0.4 on. In an axisymmetric model div u includes the hoop "
+      "strain and the mean is over the revolved cell.");
     prm.leave_subsection();
   }
 
@@ -49,14 +68,20 @@ namespace signorini
     poisson_ratio = prm.get_double("Poisson's ratio");
     plane_state =
       plane_states.value(prm.get("Plane state"), "Material/Plane state");
+    volumetric_strain = volumetric_strains.value(prm.get("Volumetric strain"),
+                                                 "Material/Volumetric strain");
     prm.leave_subsection();
-    if (!(young_modulus > 0))
-      throw InputError("Material/Young's modulus", "must be positive");
-    if (!(poisson_ratio > -1.))
-      throw InputError("Material/Poisson's ratio", "must be above -1");
-    if (!(poisson_ratio < 0.5))
-      throw InputError("Material/Poisson's ratio",
-                       "must be below 0.5 (incompressible material)");
+    parse::in_range(young_modulus,
+                    parse::Range::positive(),
+                    "Material/Young's modulus");
+    parse::in_range(poisson_ratio,
+                    parse::Range::open(-1., 0.5),
+                    "Material/Poisson's ratio",
+                    "0.5 is incompressible");
+    if (poisson_ratio < 0)
+      warn("Material/Poisson's ratio",
+           "is negative, an auxetic material that thickens when stretched; "
+           "is the sign right?");
   }
 
   double
@@ -76,11 +101,56 @@ namespace signorini
     return lambda;
   }
 
+  std::string
+  Material::check_element(const bool simplex) const
+  {
+    if (!simplex)
+      return "";
+    if (volumetric_strain == VolumetricStrain::cell_mean)
+      throw InputError("Material/Volumetric strain",
+                       "'cell mean' needs quadrilaterals or hexahedra (Q1); "
+                       "this mesh has triangles or tetrahedra (P1)");
+    if (poisson_ratio < nearly_incompressible ||
+        plane_state == PlaneState::plane_stress)
+      return "";
+    return "Material/Poisson's ratio = " + number(poisson_ratio) +
+           ": P1 triangles and tetrahedra lock as nu -> 0.5 (the body comes "
+           "out too stiff); mesh with quadrilaterals or hexahedra (Q1) for "
+           "the mean dilatation";
+  }
+
+  template <int dim>
+  bool
+  Material::mean_dilatation(const bool simplex) const
+  {
+    if (simplex)
+      return false;
+    switch (volumetric_strain)
+      {
+        case VolumetricStrain::pointwise:
+          return false;
+        case VolumetricStrain::cell_mean:
+          return true;
+        case VolumetricStrain::automatic:
+          break;
+      }
+    return poisson_ratio >= nearly_incompressible &&
+           !(dim == 2 && plane_state == PlaneState::plane_stress);
+  }
+
   template <int dim>
   SymmetricTensor<2, dim>
   Material::stress(const SymmetricTensor<2, dim> &strain) const
   {
-    return lambda<dim>() * trace(strain) * unit_symmetric_tensor<dim>() +
+    return stress<dim>(strain, trace(strain));
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Material::stress(const SymmetricTensor<2, dim> &strain,
+                   const double                   volumetric) const
+  {
+    return lambda<dim>() * volumetric * unit_symmetric_tensor<dim>() +
            2. * mu() * strain;
   }
 
@@ -88,15 +158,34 @@ namespace signorini
   double
   Material::out_of_plane_stress(const SymmetricTensor<2, dim> &strain) const
   {
+    return out_of_plane_stress<dim>(trace(strain));
+  }
+
+  template <int dim>
+  double
+  Material::out_of_plane_stress(const double volumetric) const
+  {
     if (dim != 2 || plane_state == PlaneState::plane_stress)
       return 0.;
-    return lambda<dim>() * trace(strain);
+    return lambda<dim>() * volumetric;
   }
 
   template double
   Material::lambda<2>() const;
   template double
   Material::lambda<3>() const;
+  template bool
+  Material::mean_dilatation<2>(const bool) const;
+  template bool
+  Material::mean_dilatation<3>(const bool) const;
+  template SymmetricTensor<2, 2>
+  Material::stress(const SymmetricTensor<2, 2> &, const double) const;
+  template SymmetricTensor<2, 3>
+  Material::stress(const SymmetricTensor<2, 3> &, const double) const;
+  template double
+  Material::out_of_plane_stress<2>(const double) const;
+  template double
+  Material::out_of_plane_stress<3>(const double) const;
   template SymmetricTensor<2, 2>
   Material::stress(const SymmetricTensor<2, 2> &) const;
   template SymmetricTensor<2, 3>

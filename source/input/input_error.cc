@@ -1,8 +1,12 @@
+#include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <mutex>
 #include <sstream>
 
 namespace signorini
@@ -19,6 +23,28 @@ namespace signorini
     InputError error("", message);
     error.location = location;
     return error;
+  }
+
+  namespace
+  {
+    std::mutex                recorded_warnings_mutex;
+    std::vector<InputWarning> recorded_warnings;
+  } // namespace
+
+  void
+  warn(const std::string &entry, const std::string &message)
+  {
+    std::lock_guard<std::mutex> lock(recorded_warnings_mutex);
+    recorded_warnings.push_back({entry, message});
+  }
+
+  std::vector<InputWarning>
+  take_warnings()
+  {
+    std::lock_guard<std::mutex> lock(recorded_warnings_mutex);
+    std::vector<InputWarning>   taken;
+    taken.swap(recorded_warnings);
+    return taken;
   }
 
   std::string
@@ -66,9 +92,87 @@ namespace signorini
         const double value = std::strtod(text.c_str(), &end);
         if (text.empty() || *end != '\0')
           throw InputError(entry, "'" + text + "' is not a number");
+        if (!std::isfinite(value))
+          throw InputError(entry, "'" + text + "' is not a finite number");
         return value;
       }
+
+      /** @p value in a message: as written in a parameter file. */
+      std::string
+      shown_value(const double value)
+      {
+        if (std::isnan(value))
+          return "nan";
+        if (std::isinf(value))
+          return value > 0 ? "inf" : "-inf";
+        return entry_text::of(value);
+      }
     } // namespace
+
+    Range
+    Range::positive()
+    {
+      return {0., false};
+    }
+
+    Range
+    Range::at_least(const double lower)
+    {
+      return {lower, true};
+    }
+
+    Range
+    Range::open(const double lower, const double upper)
+    {
+      return {lower, false, upper, false};
+    }
+
+    Range
+    Range::closed_open(const double lower, const double upper)
+    {
+      return {lower, true, upper, false};
+    }
+
+    bool
+    Range::contains(const double value) const
+    {
+      return std::isfinite(value) &&
+             (lower_included ? value >= lower : value > lower) &&
+             (upper_included ? value <= upper : value < upper);
+    }
+
+    std::string
+    Range::text() const
+    {
+      const bool bounded_below = std::isfinite(lower);
+      const bool bounded_above = std::isfinite(upper);
+      if (bounded_below && !bounded_above && lower == 0.)
+        return lower_included ? "zero or positive" : "positive";
+      std::string text;
+      if (bounded_below)
+        text = (lower_included ? "at least " : "above ") + shown_value(lower);
+      if (bounded_above)
+        text += (bounded_below ? " and " : "") +
+                std::string(upper_included ? "at most " : "below ") +
+                shown_value(upper);
+      return text.empty() ? "a finite number" : text;
+    }
+
+    double
+    in_range(const double       value,
+             const Range       &range,
+             const std::string &entry,
+             const std::string &why)
+    {
+      if (!range.contains(value))
+        throw InputError(entry,
+                         "must be " +
+                           (std::isfinite(value) ? range.text() :
+                                                   "a finite number") +
+                           (why.empty() ? "" : " (" + why + ")") + ", not " +
+                           shown_value(value));
+      return value;
+    }
 
     template <int dim>
     dealii::Point<dim>
@@ -123,7 +227,8 @@ namespace signorini
       for (const auto &item : items)
         {
           const double value = to_double(item, entry);
-          if (value < 1 || value != static_cast<unsigned int>(value))
+          if (value < 1 || value > std::numeric_limits<unsigned int>::max() ||
+              value != static_cast<unsigned int>(value))
             throw InputError(entry, "'" + item + "' is not a positive integer");
           values.push_back(static_cast<unsigned int>(value));
         }

@@ -1,12 +1,14 @@
 #include <deal.II/base/utilities.h>
 
 #include <signorini/input/parameter_file.h>
+#include <signorini/input/text_check.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <regex>
+#include <iterator>
 #include <sstream>
 
 namespace signorini
@@ -36,10 +38,20 @@ namespace signorini
     {
       chain.push_back(canonical);
       shown_chain.push_back(shown);
-      std::ifstream in(canonical);
-      std::string   physical, logical;
-      unsigned int  number = 0, first = 0;
-      bool          continued = false;
+      std::ifstream     file_in(canonical, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(file_in)),
+                              std::istreambuf_iterator<char>());
+      if (const auto problem = text_check::first_unexpected(bytes))
+        throw InputError::at(shown + ":" + std::to_string(problem->line) + ":" +
+                               std::to_string(problem->column),
+                             problem->what);
+      // A byte-order mark at the start is the encoding's signature, not
+      // text.
+      std::istringstream in(
+        bytes.substr(text_check::starts_with_bom(bytes) ? 3 : 0));
+      std::string  physical, logical;
+      unsigned int number = 0, first = 0;
+      bool         continued = false;
       // As ParameterHandler::parse_input joins lines.
       while (std::getline(in, physical))
         {
@@ -92,6 +104,8 @@ namespace signorini
           include(line, shown_chain.back() + ":" + std::to_string(first));
           return;
         }
+      if (starts("set ", "SET "))
+        input.sets_entries = true;
       if (starts("subsection ", "SUBSECTION "))
         subsections.push_back(dealii::Utilities::trim(line.substr(11)));
       else if (starts("end", "END") && !subsections.empty())
@@ -190,19 +204,24 @@ namespace signorini
     const auto ending = path.substr(dot == std::string::npos ? 0 : dot + 1);
     whole             = ending == "xml" || ending == "json";
     known             = whole || ending == "prm";
+    if (!known)
+      throw InputError::at(file,
+                           "Unknown input file name extension. Supported "
+                           "types are .prm, .xml, and .json.");
     folder_list.push_back(fs::path(path).parent_path().string());
     std::error_code error;
     Reader(*this).read(fs::weakly_canonical(path, error), file, path);
+    if (!whole && !sets_entries)
+      throw InputError::at(file,
+                           "sets no entries (an empty scene is the default "
+                           "one-cell body without load); start from a scene "
+                           "of prm/ or from signorini --print-parameters");
   }
 
   void
   ParameterFile::parse(dealii::ParameterHandler &prm,
                        const bool                skip_undefined) const
   {
-    if (!known)
-      throw InputError::at(file,
-                           "Unknown input file name extension. Supported "
-                           "types are .prm, .xml, and .json.");
     try
       {
         if (whole)
@@ -237,28 +256,59 @@ namespace signorini
     return folder_list;
   }
 
+  namespace
+  {
+    /** Whether @p message starts with "Line <N> of file <": then @p n is N
+     * and @p after the position after the '<' of the file. */
+    bool
+    starts_with_line(const std::string &message,
+                     unsigned int      &n,
+                     std::size_t       &after)
+    {
+      const std::string line = "Line <", of_file = "> of file <";
+      if (message.compare(0, line.size(), line) != 0)
+        return false;
+      std::size_t end = line.size();
+      while (end < message.size() && end < line.size() + 9 &&
+             std::isdigit(static_cast<unsigned char>(message[end])))
+        ++end;
+      if (end == line.size() || message.compare(end, of_file.size(), of_file))
+        return false;
+      n     = std::stoul(message.substr(line.size(), end - line.size()));
+      after = end + of_file.size();
+      return true;
+    }
+  } // namespace
+
   InputError
   ParameterFile::located(const std::string &message) const
   {
     // "Line <N> of file <PATH" names a line of the text: name its file and
-    // its line there instead.
+    // its line there instead. (No std::regex: its recursion overflows the
+    // stack on a long line.)
     std::string  located_message = message;
-    std::smatch  match;
-    const auto   prefix = std::regex("^Line <([0-9]+)> of file <");
-    unsigned int n      = 0;
-    if (std::regex_search(message, match, prefix) &&
-        message.compare(match.length(0), path.size(), path) == 0 &&
-        (n = std::stoul(match[1])) >= 1 && n <= lines.size())
+    unsigned int n               = 0;
+    std::size_t  after           = 0;
+    if (starts_with_line(message, n, after) &&
+        message.compare(after, path.size(), path) == 0 && n >= 1 &&
+        n <= lines.size())
       located_message = "Line <" + std::to_string(lines[n - 1].number) +
                         "> of file <" + lines[n - 1].file +
-                        message.substr(match.length(0) + path.size());
+                        message.substr(after + path.size());
 
-    const std::regex located_line("^Line <([0-9]+)> of file <([^>]*)>: (.*)$");
-    if (std::regex_match(located_message, match, located_line))
+    // "Line <N> of file <FILE>: what" is "FILE:N: what".
+    if (starts_with_line(located_message, n, after))
       {
-        const std::string where =
-          match[2] == path ? file : std::string(match[2]);
-        return InputError::at(where + ":" + std::string(match[1]), match[3]);
+        const auto close = located_message.find('>', after);
+        if (close != std::string::npos &&
+            located_message.compare(close, 3, ">: ") == 0)
+          {
+            const std::string named =
+              located_message.substr(after, close - after);
+            const std::string where = named == path ? file : named;
+            return InputError::at(where + ":" + std::to_string(n),
+                                  located_message.substr(close + 3));
+          }
       }
     return InputError::at(file, located_message);
   }

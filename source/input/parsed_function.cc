@@ -1,15 +1,79 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
 
+#include <signorini/base/text.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
 
+#include <array>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
 
 namespace signorini
 {
+  template <int dim>
+  ParsedFunction<dim>::ParsedFunction(const unsigned int n_components,
+                                      const std::string &entry,
+                                      const std::string &text)
+    : dealii::FunctionParser<dim>(n_components)
+    , entry(entry)
+    , text(text)
+  {
+  }
+
+  template <int dim>
+  double
+  ParsedFunction<dim>::value(const dealii::Point<dim> &p,
+                             const unsigned int        component) const
+  {
+    const double v = dealii::FunctionParser<dim>::value(p, component);
+    if (!std::isfinite(v) && watching)
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!non_finite)
+          non_finite.emplace(p, v);
+      }
+    return v;
+  }
+
+  template <int dim>
+  void
+  ParsedFunction<dim>::watch()
+  {
+    watching = true;
+  }
+
+  template <int dim>
+  void
+  ParsedFunction<dim>::check_finite(const MPI_Comm comm) const
+  {
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int first =
+      dealii::Utilities::MPI::min(non_finite ? rank : n_ranks, comm);
+    if (first == n_ranks)
+      return;
+    // The point and value of the first process that has one, on all.
+    std::array<double, dim + 1> where{};
+    if (rank == first)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          where[d] = non_finite->first[d];
+        where[dim] = non_finite->second;
+      }
+    MPI_Bcast(where.data(), dim + 1, MPI_DOUBLE, first, comm);
+    std::string point;
+    for (unsigned int d = 0; d < dim; ++d)
+      point += (d == 0 ? "" : ", ") + number(where[d]);
+    throw InputError(entry,
+                     "'" + text + "' evaluates to " +
+                       (std::isnan(where[dim]) ? std::string("nan") :
+                                                 number(where[dim])) +
+                       " at (" + point + ")");
+  }
+
   template <int dim>
   std::unique_ptr<dealii::FunctionParser<dim>>
   parse_function(const std::string                   &text,
@@ -27,7 +91,8 @@ namespace signorini
                          " expressions separated by ';' (or one for all)");
 
     const std::string variables = dim == 1 ? "x" : (dim == 2 ? "x,y" : "x,y,z");
-    auto function = std::make_unique<dealii::FunctionParser<dim>>(n_components);
+    auto              function =
+      std::make_unique<ParsedFunction<dim>>(n_components, entry, text);
     // deal.II lets muparser describe a parse error on std::cerr over several
     // lines; keep that quiet and report the parser's own sentence once.
     std::ostringstream muted;
@@ -41,6 +106,7 @@ namespace signorini
         dealii::Vector<double> values(n_components);
         function->vector_value(dealii::Point<dim>(), values);
         std::cerr.rdbuf(cerr_buffer);
+        function->watch();
       }
     catch (const dealii::ExceptionBase &error)
       {
@@ -54,6 +120,22 @@ namespace signorini
     return function;
   }
 
+  template <int dim>
+  void
+  check_finite(const dealii::Function<dim> &function, const MPI_Comm comm)
+  {
+    if (const auto parsed =
+          dynamic_cast<const ParsedFunction<dim> *>(&function))
+      parsed->check_finite(comm);
+  }
+
+  template class ParsedFunction<1>;
+  template class ParsedFunction<2>;
+  template class ParsedFunction<3>;
+  template void
+  check_finite(const dealii::Function<2> &, const MPI_Comm);
+  template void
+  check_finite(const dealii::Function<3> &, const MPI_Comm);
   template std::unique_ptr<dealii::FunctionParser<1>>
   parse_function<1>(const std::string &,
                     unsigned int,

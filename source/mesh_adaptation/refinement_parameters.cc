@@ -73,5 +73,8 @@ namespace signorini
     if (refine_fraction + coarsen_fraction > 1.)
       throw InputError("Mesh refinement/Coarsen fraction",
                        "refine and coarsen fractions add up to more than 1");
+    if (strategy == Strategy::kelly && refine_fraction == 0. && n_cycles > 1)
+      warn("Mesh refinement/Refine fraction",
+           "is 0: the Kelly cycles after cycle 0 refine no cell");
   }
 } // namespace signorini

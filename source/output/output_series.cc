@@ -1,14 +1,42 @@
 #include <signorini/output/output_series.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
-#include <regex>
 #include <stdexcept>
+#include <utility>
 
 namespace signorini
 {
   namespace output_series
   {
+    namespace
+    {
+      /**
+       * If @p text is @p prefix followed by @p minimum digits or more: the
+       * number they make and the rest of @p text. Numbers of more than nine
+       * digits are no cycle's.
+       */
+      std::optional<std::pair<unsigned int, std::string>>
+      numbered(const std::string &text,
+               const std::string &prefix,
+               const std::size_t  minimum)
+      {
+        if (text.compare(0, prefix.size(), prefix) != 0)
+          return {};
+        std::size_t end = prefix.size();
+        while (end < text.size() &&
+               std::isdigit(static_cast<unsigned char>(text[end])))
+          ++end;
+        const std::size_t n_digits = end - prefix.size();
+        if (n_digits < minimum || n_digits > 9)
+          return {};
+        return std::make_pair(static_cast<unsigned int>(std::stoul(
+                                text.substr(prefix.size(), n_digits))),
+                              text.substr(end));
+      }
+    } // namespace
+
     Member
     classify(const std::string &file_name)
     {
@@ -28,20 +56,38 @@ namespace signorini
           return member;
         }
       // Cycle numbers have at least two digits (deal.II's int_to_string).
-      static const std::regex cycle_file(
-        "(solution-([0-9]{2,})(\\.[0-9]{4,})?\\.vtu)|"
-        "(solution-([0-9]{2,})\\.pvtu)|"
-        "(contact_pressure-([0-9]{2,})\\.csv)|"
-        "(checkpoint-([0-9]{2,})\\.(state|mesh|mesh\\.info|"
-        "mesh_fixed\\.data|mesh_variable\\.data))");
-      std::smatch match;
-      if (!std::regex_match(name, match, cycle_file))
+      const auto cycle_file = [&](const std::string &prefix) {
+        return numbered(name, prefix, 2);
+      };
+      bool owned = false;
+      if (const auto n = cycle_file("solution-"))
+        {
+          member.cycle            = n->first;
+          const std::string &rest = n->second;
+          // ".vtu", ".pvtu", or a piece ".RRRR.vtu" of four digits or more.
+          const auto piece = numbered(rest, ".", 4);
+          owned            = rest == ".vtu" || rest == ".pvtu" ||
+                  (piece && piece->second == ".vtu");
+        }
+      else if (const auto n = cycle_file("contact_pressure-"))
+        {
+          member.cycle = n->first;
+          owned        = n->second == ".csv";
+        }
+      else if (const auto n = cycle_file("checkpoint-"))
+        {
+          member.cycle = n->first;
+          for (const char *ending : {".state",
+                                     ".mesh",
+                                     ".mesh.info",
+                                     ".mesh_fixed.data",
+                                     ".mesh_variable.data"})
+            owned = owned || n->second == ending;
+          member.checkpoint = owned;
+        }
+      if (!owned)
         return Member();
       member.owned = true;
-      for (const unsigned int group : {2u, 5u, 7u, 9u})
-        if (match[group].matched)
-          member.cycle = std::stoul(match[group]);
-      member.checkpoint = match[8].matched;
       return member;
     }
 

@@ -48,7 +48,8 @@ namespace signorini
   DisplacementFields<dim>::evaluate(const Point<dim>     &point,
                                     const Tensor<1, dim> &displacement,
                                     const Tensor<2, dim> &gradient,
-                                    double               *fields) const
+                                    double               *fields,
+                                    const double *cell_mean_dilatation) const
   {
     SymmetricTensor<2, dim> strain;
     for (unsigned int i = 0; i < dim; ++i)
@@ -59,24 +60,28 @@ namespace signorini
     double s[3][3] = {};
     if (material.axisymmetric())
       {
-        const double hoop = axisymmetry::hoop_strain(displacement[0],
+        const double hoop     = axisymmetry::hoop_strain(displacement[0],
                                                      gradient[0][0],
                                                      point[0],
                                                      axis_tolerance);
-        const auto   sigma =
-          material.stress<3>(axisymmetry::revolved_strain<dim>(strain, hoop));
+        const auto   revolved = axisymmetry::revolved_strain<dim>(strain, hoop);
+        const double volumetric =
+          cell_mean_dilatation ? *cell_mean_dilatation : trace(revolved);
+        const auto sigma = material.stress<3>(revolved, volumetric);
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
             s[i][j] = sigma[i][j];
       }
     else
       {
-        const auto sigma = material.stress<dim>(strain);
+        const double volumetric =
+          cell_mean_dilatation ? *cell_mean_dilatation : trace(strain);
+        const auto sigma = material.stress<dim>(strain, volumetric);
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             s[i][j] = sigma[i][j];
         if (dim == 2)
-          s[2][2] = material.out_of_plane_stress<dim>(strain);
+          s[2][2] = material.out_of_plane_stress<dim>(volumetric);
       }
     fields[0] = std::sqrt(
       0.5 * ((s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
@@ -96,6 +101,13 @@ namespace signorini
     Tensor<1, dim> normal;
     const double   gap   = obstacle.gap(point, normal);
     fields[n_fields - 1] = gap + normal * displacement;
+  }
+
+  template <int dim>
+  const Material &
+  DisplacementFields<dim>::material_law() const
+  {
+    return material;
   }
 
   template class DisplacementFields<2>;

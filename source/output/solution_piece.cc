@@ -1,8 +1,12 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/thread_management.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
+#include <signorini/elasticity/axisymmetry.h>
 #include <signorini/output/solution_piece.h>
+
+#include <optional>
 
 namespace signorini
 {
@@ -78,7 +82,24 @@ namespace signorini
       field.values.resize(field.n_components * n_points);
 
     const FiniteElement<dim> &fe = in.dof_handler.get_fe();
+    const bool                mean_dilatation =
+      in.fields.material_law().template mean_dilatation<dim>(
+        fe.reference_cell().is_simplex());
+    const bool        revolved = in.fields.material_law().axisymmetric();
+    const QGauss<dim> cell_quadrature(fe.degree + 1);
     const auto work = [&](const std::size_t begin, const std::size_t end) {
+      // With mean dilatation, the mean of div u over each cell (over the
+      // revolved cell, with the hoop strain, in an axisymmetric model).
+      std::optional<FEValues<dim>> cell_values;
+      if (mean_dilatation)
+        cell_values.emplace(in.mapping,
+                            fe,
+                            cell_quadrature,
+                            update_gradients | update_JxW_values |
+                              (revolved ?
+                                 update_values | update_quadrature_points :
+                                 update_default));
+      double                               cell_mean = 0.;
       FEValues<dim>                        fe_values(in.mapping,
                               fe,
                               at_vertices,
@@ -105,6 +126,31 @@ namespace signorini
               active[i]    = in.active[k];
             }
           const float kelly = in.kelly_indicator(cells[c]->active_cell_index());
+          if (mean_dilatation)
+            {
+              cell_values->reinit(cells[c]);
+              double dilatation = 0., volume = 0.;
+              for (const unsigned int q :
+                   cell_values->quadrature_point_indices())
+                {
+                  const double JxW =
+                    cell_values->JxW(q) *
+                    (revolved ?
+                       axisymmetry::weight(cell_values->quadrature_point(q)) :
+                       1.);
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    {
+                      double divergence =
+                        cell_values->shape_grad(i, q)[component[i]];
+                      if (revolved && component[i] == 0)
+                        divergence += cell_values->shape_value(i, q) /
+                                      cell_values->quadrature_point(q)[0];
+                      dilatation += u[i] * divergence * JxW;
+                    }
+                  volume += JxW;
+                }
+              cell_mean = dilatation / volume;
+            }
           for (unsigned int q = 0; q < n_vertices; ++q)
             {
               Tensor<1, dim> displacement;
@@ -121,7 +167,11 @@ namespace signorini
                 }
               const Point<dim> &x     = fe_values.quadrature_point(q);
               const std::size_t point = c * n_vertices + q;
-              in.fields.evaluate(x, displacement, gradient, values);
+              in.fields.evaluate(x,
+                                 displacement,
+                                 gradient,
+                                 values,
+                                 mean_dilatation ? &cell_mean : nullptr);
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   piece.points[3 * point + d]           = x[d];

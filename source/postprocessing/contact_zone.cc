@@ -2,6 +2,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <signorini/input/parsed_function.h>
 #include <signorini/postprocessing/contact_zone.h>
 
 #include <algorithm>
@@ -107,6 +108,7 @@ namespace signorini
     zone.pressure_error      = std::numeric_limits<double>::quiet_NaN();
     if (exact)
       {
+        check_finite(*exact, comm);
         error_squared       = Utilities::MPI::sum(error_squared, comm);
         norm_squared        = Utilities::MPI::sum(norm_squared, comm);
         zone.pressure_error = norm_squared > 0 ?

@@ -108,6 +108,15 @@ namespace signorini
     contact_width = number("Contact width");
     energy        = number("Energy");
     prm.leave_subsection();
+    if (max_pressure)
+      parse::in_range(*max_pressure,
+                      parse::Range::at_least(0.),
+                      "Reference/Maximum pressure",
+                      "a contact pressure is not negative");
+    if (contact_width)
+      parse::in_range(*contact_width,
+                      parse::Range::at_least(0.),
+                      "Reference/Contact width");
   }
 
   template struct Reference<2>;

@@ -4,9 +4,11 @@
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
 #include <signorini/elasticity/axisymmetry.h>
+#include <signorini/elasticity/rigid_motions.h>
 #include <signorini/problem/contact_problem.h>
 
 #include <chrono>
+#include <iostream>
 #include <set>
 
 namespace signorini
@@ -62,6 +64,16 @@ namespace signorini
          {"Obstacle/Contact boundary ids", parameters.obstacle.contact_ids}});
     }
     setup_system();
+    check_rigid_motions_held(discretisation,
+                             contact_surface.nodes(),
+                             rigid_body_modes(discretisation),
+                             parameters.contact.method !=
+                               ContactParameters::Method::none);
+    if (const auto warning =
+          parameters.material.check_element(discretisation.simplex());
+        !warning.empty() &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "signorini: warning: " << warning << std::endl;
     run_time += now() - start;
     const auto resumed = start_output(resume);
     if (resumed)

@@ -135,7 +135,10 @@ main()
                            "checkpoint-01",
                            "checkpoint-01.mesh.info.bak",
                            "statistics.csv.part.txt",
-                           "sub/solution-01.vtu"})
+                           "sub/solution-01.vtu",
+                           "solution-01.vtu.vtu",
+                           "checkpoint-01.state.mesh",
+                           "solution-99999999999999999999999.vtu"})
     print(name);
 
   const fs::path directory =

@@ -4,8 +4,13 @@
 #include <signorini/input/input_error.h>
 
 #include <functional>
+#include <iomanip>
 #include <iostream>
+#include <limits>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace signorini;
 
@@ -111,8 +116,16 @@ main()
     });
 
   std::cout << "unsigned_list, 2 values:\n";
-  for (const std::string text :
-       {"20, 2", " 1 ,1 ", "20", "20, 2, 1", "0, 2", "-3, 2", "2.5, 2", "a, 2"})
+  for (const std::string text : {"20, 2",
+                                 " 1 ,1 ",
+                                 "20",
+                                 "20, 2, 1",
+                                 "0, 2",
+                                 "-3, 2",
+                                 "2.5, 2",
+                                 "a, 2",
+                                 "1e10, 2",
+                                 "inf, 2"})
     check(text, [](const std::string &t) {
       std::string s;
       for (const auto n : parse::unsigned_list(t, 2, "Geometry/Repetitions"))
@@ -134,6 +147,29 @@ main()
           return s;
         });
     }
+
+  std::cout << "in_range:\n";
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<std::string, parse::Range>> ranges = {
+    {"positive", parse::Range::positive()},
+    {"at_least(0)", parse::Range::at_least(0.)},
+    {"at_least(1)", parse::Range::at_least(1.)},
+    {"open(-1, 0.5)", parse::Range::open(-1., 0.5)},
+    {"closed_open(0, 1)", parse::Range::closed_open(0., 1.)},
+    {"Range()", parse::Range()}};
+  for (const auto &[name, range] : ranges)
+    for (const double value : {-1., 0., 1e-300, 0.4999999, 0.5, 1., inf, nan})
+      {
+        std::ostringstream label;
+        label << std::setprecision(10) << name << " " << value;
+        check(label.str(), [&](const std::string &) {
+          std::ostringstream result;
+          result << std::setprecision(10)
+                 << parse::in_range(value, range, "Section/Entry", "why");
+          return result.str();
+        });
+      }
 
   std::cout << "InputError::at:\n";
   const InputError error = InputError::at("scene.prm:12", "unknown entry");

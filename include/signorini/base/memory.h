@@ -1,6 +1,8 @@
 #ifndef signorini_base_memory_h
 #define signorini_base_memory_h
 
+#include <deal.II/base/mpi.h>
+
 namespace signorini
 {
   /**
@@ -13,6 +15,17 @@ namespace signorini
    */
   void
   release_free_memory();
+
+  /**
+   * The memory [bytes] that the processes of @p comm can allocate together
+   * if each takes an equal share: the number of processes times the least
+   * that one of them can allocate, which is its node's available memory
+   * (MemAvailable of /proc/meminfo) divided among the node's processes of
+   * @p comm, or less if its address space is limited (ulimit -v).
+   * Collective; infinite if nothing limits it.
+   */
+  double
+  available_memory(const MPI_Comm comm);
 } // namespace signorini
 
 #endif

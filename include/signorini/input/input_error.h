@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,25 @@ namespace signorini
     std::string location;
   };
 
+  /** A value that is legal but unusual: the entry it concerns and what the
+   * results will suffer from. */
+  struct InputWarning
+  {
+    std::string entry;
+    std::string message;
+  };
+
+  /** Records a warning about @p entry ("Subsection/Entry"). The program
+   * prints the warnings recorded while the parameters are read, each as
+   * one line "signorini: warning: FILE: entry 'ENTRY': MESSAGE", before
+   * the first cycle. */
+  void
+  warn(const std::string &entry, const std::string &message);
+
+  /** The warnings recorded since the last call, in order; forgets them. */
+  std::vector<InputWarning>
+  take_warnings();
+
   /** The additional information of a deal.II exception as one line. */
   std::string
   one_line(const dealii::ExceptionBase &error);
@@ -41,7 +61,50 @@ namespace signorini
    * InputError that names @p entry. */
   namespace parse
   {
-    /** "x0, x1[, x2]" with exactly @p dim coordinates. */
+    /** The values a number of an entry may take: an interval whose ends
+     * each belong to it or not. Infinite ends are never reached: a value
+     * must be finite. */
+    struct Range
+    {
+      double lower          = -std::numeric_limits<double>::infinity();
+      bool   lower_included = true;
+      double upper          = std::numeric_limits<double>::infinity();
+      bool   upper_included = true;
+
+      /** (0, inf). */
+      static Range
+      positive();
+      /** [@p lower, inf). */
+      static Range
+      at_least(const double lower);
+      /** (@p lower, @p upper). */
+      static Range
+      open(const double lower, const double upper);
+      /** [@p lower, @p upper). */
+      static Range
+      closed_open(const double lower, const double upper);
+
+      /** Whether @p value is finite and in the range. */
+      bool
+      contains(const double value) const;
+
+      /** The range in words: "positive", "at least 0", "above -1 and below
+       * 0.5", ... */
+      std::string
+      text() const;
+    };
+
+    /** @p value, if it is a finite number in @p range; else throws an
+     * InputError naming @p entry ("must be positive, not 0"), with
+     * @p why, if given, in parentheses after the range. */
+    double
+    in_range(const double       value,
+             const Range       &range,
+             const std::string &entry,
+             const std::string &why = "");
+
+    /** "x0, x1[, x2]" with exactly @p dim coordinates, each a finite
+     * number. */
     template <int dim>
     dealii::Point<dim>
     point(const std::string &text, const std::string &entry);

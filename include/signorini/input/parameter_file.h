@@ -34,7 +34,13 @@ namespace signorini
     /**
      * Reads @p file and the files it includes. Throws an InputError at
      * "FILE:LINE" of an `include` line that closes a cycle of includes,
-     * names a directory, or names a file that cannot be opened.
+     * names a directory, or names a file that cannot be opened; at
+     * "FILE:LINE:COLUMN" of a byte that is not text, or of a character
+     * outside a comment that only looks like a space, a quote or a minus
+     * (see text_check::first_unexpected); for a file whose name does not
+     * end in .prm, .xml or .json; and for a .prm file that, with the
+     * files it includes, sets no entry. A byte-order mark at the start of
+     * a file is skipped.
      */
     explicit ParameterFile(const std::string &file);
 
@@ -91,7 +97,9 @@ namespace signorini
     bool whole = false;
     /** Whether the file's name ends in .prm, .xml or .json, the formats
      * ParameterHandler reads. */
-    bool                      known = false;
+    bool known = false;
+    /** Whether a line of the text sets an entry. */
+    bool                      sets_entries = false;
     std::vector<Line>         lines;
     std::optional<Unbalanced> unbalanced;
     std::vector<std::string>  folder_list;

@@ -24,7 +24,11 @@ namespace signorini
    * `stress_rz`, and von Mises includes the hoop stress.
    *
    * One call evaluates all of them from the displacement and its gradient,
-   * which the output computes once per point for every field.
+   * which the output computes once per point for every field. Cells with
+   * mean dilatation (Material::mean_dilatation) pass the cell's mean
+   * volumetric strain, which the stress takes instead of div u (in an
+   * axisymmetric model the mean over the revolved cell of div u with the
+   * hoop strain).
    */
   template <int dim>
   class DisplacementFields
@@ -50,7 +54,13 @@ namespace signorini
     evaluate(const dealii::Point<dim>     &point,
              const dealii::Tensor<1, dim> &displacement,
              const dealii::Tensor<2, dim> &gradient,
-             double                       *fields) const;
+             double                       *fields,
+             const double *cell_mean_dilatation = nullptr) const;
+
+    /** The material, whose mean_dilatation() tells which cells pass their
+     * mean volumetric strain to evaluate(). */
+    const Material &
+    material_law() const;
 
   private:
     const Material      &material;

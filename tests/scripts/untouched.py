@@ -1,0 +1,147 @@
+#!/usr/bin/env python3
+"""Runs one of the documented scripts in its smoke mode and checks that it
+changed nothing of the repository outside build/: every folder, file (its
+bytes) and link (its target) is the same afterwards, and no file appeared
+or went. Also checks the files the script must have written in its smoke
+folder.
+
+    untouched.py NAME [--plain] [--expect FILE]... [--needs COMMAND]...
+                 -- COMMAND...
+
+COMMAND runs in a fresh folder build/tests/scripts/NAME, which is also its
+SIGNORINI_SMOKE folder (see scripts/common.py), unless --plain: then it runs
+as a user runs it, with no smoke mode. Each --expect FILE (relative
+to that folder) must exist and not be empty afterwards. If a --needs COMMAND
+is not installed, the test is skipped (exit status 77): tests install
+nothing. Prints the script's exit status, its last lines, the changes to the
+repository and the verdicts; exits non-zero if anything failed.
+"""
+import hashlib
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+SKIPPED = 77
+
+
+def snapshot(skip):
+    """{path relative to ROOT: what it is} for everything under ROOT but
+    the folders in `skip` and .git."""
+    found = {}
+    for folder, folders, files in os.walk(ROOT):
+        kept = []
+        for name in sorted(folders):
+            path = os.path.join(folder, name)
+            if name == ".git" and folder == ROOT or \
+                    any(os.path.samefile(path, s) for s in skip
+                        if os.path.exists(s)):
+                continue
+            if os.path.islink(path):
+                found[os.path.relpath(path, ROOT)] = \
+                    "link to " + os.readlink(path)
+            else:
+                found[os.path.relpath(path, ROOT)] = "folder"
+                kept.append(name)
+        folders[:] = kept
+        for name in files:
+            path = os.path.join(folder, name)
+            if os.path.islink(path):
+                what = "link to " + os.readlink(path)
+            else:
+                digest = hashlib.sha256()
+                with open(path, "rb") as content:
+                    for block in iter(lambda: content.read(1 << 20), b""):
+                        digest.update(block)
+                what = "sha256 " + digest.hexdigest()
+            found[os.path.relpath(path, ROOT)] = what
+    return found
+
+
+def main():
+    arguments = sys.argv[1:]
+    if "--" not in arguments or not arguments:
+        sys.exit(__doc__)
+    split = arguments.index("--")
+    options, command = arguments[1:split], arguments[split + 1:]
+    name = arguments[0]
+    expected, needed, plain = [], [], False
+    while options:
+        if options[0] == "--plain":
+            plain = True
+            options = options[1:]
+            continue
+        if options[0] == "--expect" and len(options) > 1:
+            expected.append(options[1])
+        elif options[0] == "--needs" and len(options) > 1:
+            needed.append(options[1])
+        else:
+            sys.exit(__doc__)
+        options = options[2:]
+    missing = [tool for tool in needed if shutil.which(tool) is None]
+    if missing:
+        print("skipped: %s not installed (scripts/install-packages --test "
+              "installs it; tests install nothing)" % ", ".join(missing))
+        return SKIPPED
+
+    work = os.path.join(os.getcwd(), "scripts", name)
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    build = os.path.join(ROOT, "build")
+    before = snapshot([build, os.getcwd()])
+    env = dict(os.environ, SIGNORINI_SMOKE=work,
+               OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_btl_vader_single_copy_mechanism="none")
+    # As a user runs it: Python may cache bytecode unless the script says
+    # not to.
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    if plain:
+        del env["SIGNORINI_SMOKE"]
+    start = time.monotonic()
+    with open(os.path.join(work, "script.log"), "w") as log:
+        status = subprocess.run(command, cwd=work, env=env, stdout=log,
+                                stderr=subprocess.STDOUT).returncode
+    seconds = time.monotonic() - start
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = usage.ru_utime + usage.ru_stime
+    after = snapshot([build, os.getcwd()])
+
+    failed = status != 0
+    print("%s: exit status %d after %.1f s (%.1f s CPU)" %
+          (" ".join(os.path.relpath(c, ROOT) if c.startswith(ROOT) else c
+                    for c in command), status, seconds, cpu))
+    with open(os.path.join(work, "script.log")) as log:
+        lines = log.read().splitlines()
+    for line in lines[-15 if failed else -3:]:
+        print("  | " + line)
+    changes = sorted(set(before) | set(after))
+    changes = [p for p in changes if before.get(p) != after.get(p)]
+    for path in changes:
+        print("CHANGED: %s: %s -> %s" % (path, before.get(path, "absent"),
+                                          after.get(path, "absent")))
+    print("repository outside build/: %d entries, %s" %
+          (len(before), "unchanged" if not changes else
+           "%d changed" % len(changes)))
+    failed |= bool(changes)
+    for relative in expected:
+        path = os.path.join(work, relative)
+        original = os.path.join(ROOT, relative)
+        written = os.path.isfile(path) and not os.path.islink(path) and \
+            os.path.getsize(path) > 0
+        # A rewritten copy of a repository file differs from it: the
+        # script wrote its own results there.
+        if written and os.path.isfile(original):
+            with open(path, "rb") as a, open(original, "rb") as b:
+                written = a.read() != b.read()
+        print("written: %s: %s" % (relative, "yes" if written else "NO"))
+        failed |= not written
+    print("FAILED" if failed else "PASSED")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

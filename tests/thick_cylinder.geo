@@ -1,0 +1,20 @@
+// A quarter of a thick-walled cylinder, inner radius 1 mm, outer 2 mm, for
+// Gmsh. Physical groups become boundary ids: 1 the cut along y = 0, 2 the
+// cut along x = 0, 3 the inner surface, 4 the outer surface.
+lc = 0.2;
+Point(1) = {0, 0, 0, lc};
+Point(2) = {1, 0, 0, lc};
+Point(3) = {2, 0, 0, lc};
+Point(4) = {0, 2, 0, lc};
+Point(5) = {0, 1, 0, lc};
+Line(1) = {2, 3};
+Circle(2) = {3, 1, 4};
+Line(3) = {4, 5};
+Circle(4) = {5, 1, 2};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Physical Curve(1) = {1};
+Physical Curve(2) = {3};
+Physical Curve(3) = {4};
+Physical Curve(4) = {2};
+Physical Surface(1) = {1};
