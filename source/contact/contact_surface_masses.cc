@@ -27,6 +27,7 @@ namespace signorini
                                      fe,
                                      discretisation.face_quadrature(),
                                      update_values | update_JxW_values |
+                                       discretisation.weight_flags() |
                                        (n_obstacles > 1 ?
                                                     update_quadrature_points |
                                             update_normal_vectors :
@@ -47,8 +48,10 @@ namespace signorini
                   for (unsigned int i = 0; i < n; ++i)
                     for (const unsigned int q :
                          fe_face_values.quadrature_point_indices())
-                      cell_mass[0](i) += fe_face_values.shape_value(i, q) *
-                                         fe_face_values.JxW(q);
+                      cell_mass[0](i) +=
+                        fe_face_values.shape_value(i, q) *
+                        fe_face_values.JxW(q) *
+                        discretisation.weight(fe_face_values, q);
                 }
               else
                 {
@@ -61,8 +64,10 @@ namespace signorini
                         obstacle_set.facing(fe_face_values.quadrature_point(q),
                                             fe_face_values.normal_vector(q));
                       for (unsigned int i = 0; i < n; ++i)
-                        cell_mass[k](i) += fe_face_values.shape_value(i, q) *
-                                           fe_face_values.JxW(q);
+                        cell_mass[k](i) +=
+                          fe_face_values.shape_value(i, q) *
+                          fe_face_values.JxW(q) *
+                          discretisation.weight(fe_face_values, q);
                     }
                 }
               cell->get_dof_indices(dof_indices);

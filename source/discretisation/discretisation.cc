@@ -25,11 +25,13 @@ namespace signorini
     const Geometry<dim>           &geometry,
     const Refinement              &refinement,
     const BoundaryConditions<dim> &boundary_conditions,
-    const MPI_Comm                 mpi_communicator)
+    const MPI_Comm                 mpi_communicator,
+    const bool                     axisymmetric)
     : geometry(geometry)
     , refinement(refinement)
     , boundary_conditions(boundary_conditions)
     , communicator(mpi_communicator)
+    , axisymmetric_model(axisymmetric)
   {
   }
 
@@ -68,6 +70,10 @@ namespace signorini
     const auto corners =
       GridTools::compute_bounding_box(coarse_mesh).get_boundary_points();
     diagonal = corners.first.distance(corners.second);
+    if (axisymmetric_model)
+      axisymmetry::check_side_of_axis(coarse_mesh,
+                                      geometry,
+                                      axisymmetry::axis_tolerance(diagonal));
 
     mesh_adaptation =
       create_mesh_adaptation(geometry, refinement, simplex_cells, communicator);
@@ -111,6 +117,11 @@ namespace signorini
         fixed_constraints,
         mask);
     check_finite(*boundary_conditions.prescribed_displacement, communicator);
+    if (axisymmetric_model)
+      axisymmetry::add_axis_constraints(dofs,
+                                        relevant_dofs,
+                                        axisymmetry::axis_tolerance(diagonal),
+                                        fixed_constraints);
     fixed_constraints.close();
 
     supported_dofs.clear();
@@ -226,6 +237,13 @@ namespace signorini
   Discretisation<dim>::simplex() const
   {
     return simplex_cells;
+  }
+
+  template <int dim>
+  bool
+  Discretisation<dim>::axisymmetric() const
+  {
+    return axisymmetric_model;
   }
 
   template <int dim>

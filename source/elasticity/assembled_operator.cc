@@ -83,7 +83,7 @@ namespace signorini
     FEValues<dim>                        fe_values(discretisation.mapping(),
                             fe,
                             discretisation.quadrature(),
-                            update_gradients | update_JxW_values);
+                            elastic_update_flags(material));
     const unsigned int                   n = fe.n_dofs_per_cell();
     Vector<double>                       cell_residual(n), cell_solution(n);
     std::vector<types::global_dof_index> dof_indices(n);
@@ -166,7 +166,7 @@ namespace signorini
     FEValues<dim>      fe_values(discretisation.mapping(),
                             fe,
                             discretisation.quadrature(),
-                            update_gradients | update_JxW_values);
+                            elastic_update_flags(material));
     const unsigned int n = fe.n_dofs_per_cell();
     // The right-hand side gets only the lifting of inhomogeneous
     // constraints here; the load vector is added below.

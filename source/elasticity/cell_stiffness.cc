@@ -1,8 +1,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/cell_stiffness.h>
-
-#include <cmath>
 
 namespace signorini
 {
@@ -13,11 +12,133 @@ namespace signorini
     /** Shapes stored at most, and how many look-ups must have found a
      * repetition for the cache to go on storing. */
     constexpr unsigned int max_shapes = 4096;
+
+    /** The strain (r, z, theta) of shape function @p i of an axisymmetric
+     * model at quadrature point @p q. */
+    template <int dim>
+    SymmetricTensor<2, 3>
+    revolved_shape_strain(const FEValues<dim> &fe_values,
+                          const unsigned int   i,
+                          const unsigned int   q)
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      const bool                       radial =
+        fe_values.get_fe().system_to_component_index(i).first == 0;
+      return axisymmetry::revolved_strain<dim>(
+        fe_values[displacement].symmetric_gradient(i, q),
+        radial ?
+          fe_values.shape_value(i, q) / fe_values.quadrature_point(q)[0] :
+          0.);
+    }
+
+    /** The matrix of an axisymmetric model's cell, the integral over the
+     * revolved cell; with @p mean_dilatation, 2 mu eps : eps pointwise and
+     * lambda D_i D_j / V, D_i the integral of the trace of the revolved
+     * strain of phi_i (hoop strain included) and V the revolved volume. */
+    template <int dim>
+    void
+    compute_revolved(const Material      &material,
+                     const bool           mean_dilatation,
+                     const FEValues<dim> &fe_values,
+                     FullMatrix<double>  &cell_matrix)
+    {
+      const unsigned int n = fe_values.get_fe().n_dofs_per_cell();
+      std::vector<SymmetricTensor<2, 3>> strain(n), stress(n);
+      Vector<double>                     divergence(mean_dilatation ? n : 0);
+      double                             volume = 0.;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const double JxW = fe_values.JxW(q) *
+                             axisymmetry::weight(fe_values.quadrature_point(q));
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              strain[i] = revolved_shape_strain(fe_values, i, q);
+              if (mean_dilatation)
+                {
+                  stress[i] = 2. * material.mu() * JxW * strain[i];
+                  divergence(i) += trace(strain[i]) * JxW;
+                }
+              else
+                stress[i] = material.template stress<3>(strain[i]) * JxW;
+            }
+          volume += JxW;
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j <= i; ++j)
+              cell_matrix(i, j) += strain[i] * stress[j];
+        }
+      if (mean_dilatation)
+        {
+          const double factor = material.template lambda<3>() / volume;
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j <= i; ++j)
+              cell_matrix(i, j) += factor * divergence(i) * divergence(j);
+        }
+    }
+
+    /** cell_internal_force() of an axisymmetric model's cell, with or
+     * without @p mean_dilatation; returns the strain energy. */
+    template <int dim>
+    double
+    revolved_internal_force(const Material      &material,
+                            const bool           mean_dilatation,
+                            const FEValues<dim> &fe_values,
+                            const TrilinosWrappers::MPI::Vector &u,
+                            Vector<double>                      &internal)
+    {
+      const FEValuesExtractors::Vector     displacement(0);
+      const unsigned int                   n_q = fe_values.n_quadrature_points;
+      std::vector<SymmetricTensor<2, dim>> in_plane(n_q);
+      std::vector<Tensor<1, dim>>          values(n_q);
+      fe_values[displacement].get_function_symmetric_gradients(u, in_plane);
+      fe_values[displacement].get_function_values(u, values);
+      const double   mu = material.mu(), lambda = material.template lambda<3>();
+      Vector<double> divergence(internal.size());
+      double         volume = 0., dilatation = 0., strain_energy = 0.;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const Point<dim> &x   = fe_values.quadrature_point(q);
+          const double      JxW = fe_values.JxW(q) * axisymmetry::weight(x);
+          const auto        strain =
+            axisymmetry::revolved_strain<dim>(in_plane[q], values[q][0] / x[0]);
+          if (!mean_dilatation)
+            {
+              const auto stress = material.template stress<3>(strain);
+              strain_energy += 0.5 * (strain * stress) * JxW;
+              for (unsigned int i = 0; i < internal.size(); ++i)
+                internal(i) +=
+                  revolved_shape_strain(fe_values, i, q) * stress * JxW;
+              continue;
+            }
+          volume += JxW;
+          dilatation += trace(strain) * JxW;
+          strain_energy += mu * (strain * strain) * JxW;
+          for (unsigned int i = 0; i < internal.size(); ++i)
+            {
+              const auto strain_i = revolved_shape_strain(fe_values, i, q);
+              internal(i) += 2. * mu * (strain_i * strain) * JxW;
+              divergence(i) += trace(strain_i) * JxW;
+            }
+        }
+      if (!mean_dilatation)
+        return strain_energy;
+      for (unsigned int i = 0; i < internal.size(); ++i)
+        internal(i) += lambda * divergence(i) * dilatation / volume;
+      return strain_energy + 0.5 * lambda * dilatation * dilatation / volume;
+    }
   } // namespace
+
+  UpdateFlags
+  elastic_update_flags(const Material &material)
+  {
+    return update_gradients | update_JxW_values |
+           (material.axisymmetric() ? update_values | update_quadrature_points :
+                                      update_default);
+  }
 
   template <int dim>
   CellStiffness<dim>::CellStiffness(const Material &material)
     : material(material)
+    , scales_linearly(dim == 3 || material.axisymmetric())
   {
   }
 
@@ -45,32 +166,37 @@ namespace signorini
     Vector<double> divergence(mean_dilatation ? n : 0);
     double         volume = 0.;
     cell_matrix.reinit(n, n);
-    for (const unsigned int q : fe_values.quadrature_point_indices())
+    if (material.axisymmetric())
+      compute_revolved(material, mean_dilatation, fe_values, cell_matrix);
+    else
       {
-        const double JxW = fe_values.JxW(q);
-        for (unsigned int i = 0; i < n; ++i)
+        for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            strain[i] = fe_values[displacement].symmetric_gradient(i, q);
-            if (mean_dilatation)
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int i = 0; i < n; ++i)
               {
-                stress[i] = 2. * material.mu() * JxW * strain[i];
-                divergence(i) += trace(strain[i]) * JxW;
+                strain[i] = fe_values[displacement].symmetric_gradient(i, q);
+                if (mean_dilatation)
+                  {
+                    stress[i] = 2. * material.mu() * JxW * strain[i];
+                    divergence(i) += trace(strain[i]) * JxW;
+                  }
+                else
+                  stress[i] = material.template stress<dim>(strain[i]) * JxW;
               }
-            else
-              stress[i] = material.template stress<dim>(strain[i]) * JxW;
+            volume += JxW;
+            // The matrix is symmetric: the lower triangle, mirrored below.
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) += strain[i] * stress[j];
           }
-        volume += JxW;
-        // The matrix is symmetric: the lower triangle, mirrored below.
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j <= i; ++j)
-            cell_matrix(i, j) += strain[i] * stress[j];
-      }
-    if (mean_dilatation)
-      {
-        const double factor = material.template lambda<dim>() / volume;
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j <= i; ++j)
-            cell_matrix(i, j) += factor * divergence(i) * divergence(j);
+        if (mean_dilatation)
+          {
+            const double factor = material.template lambda<dim>() / volume;
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) += factor * divergence(i) * divergence(j);
+          }
       }
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < i; ++j)
@@ -81,7 +207,7 @@ namespace signorini
   typename CellStiffness<dim>::Shape
   CellStiffness<dim>::shape_of(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    double                                               &scale)
+    double                                               &scale) const
   {
     const Point<dim> origin = cell->vertex(0);
     scale                   = cell->vertex(1).distance(origin);
@@ -90,6 +216,8 @@ namespace signorini
     for (unsigned int v = 1; v < cell->n_vertices(); ++v)
       for (unsigned int d = 0; d < dim; ++d)
         shape[(v - 1) * dim + d] = (cell->vertex(v)[d] - origin[d]) / scale;
+    if (material.axisymmetric())
+      shape.back() = origin[0] / scale;
     return shape;
   }
 
@@ -102,10 +230,10 @@ namespace signorini
     const auto found = cache.find(shape_of(cell, scale));
     if (found == cache.end())
       return nullptr;
-    if (dim == 2)
+    if (!scales_linearly)
       return &found->second;
     scaled = found->second;
-    scaled *= std::pow(scale, dim - 2.);
+    scaled *= scale;
     return &scaled;
   }
 
@@ -131,15 +259,17 @@ namespace signorini
             compute(fe_values, scaled);
             return scaled;
           }
-        // Stored for the unit scale: K(s x) = s^(dim-2) K(x).
+        // Stored for the unit scale: K(s x) = s^(dim-2) K(x) (s K(x) in an
+        // axisymmetric model).
         found = cache.emplace(shape, FullMatrix<double>()).first;
         compute(fe_values, found->second);
-        found->second *= std::pow(scale, 2. - dim);
+        if (scales_linearly)
+          found->second *= 1. / scale;
       }
-    if (dim == 2)
+    if (!scales_linearly)
       return found->second;
     scaled = found->second;
-    scaled *= std::pow(scale, dim - 2.);
+    scaled *= scale;
     return scaled;
   }
 
@@ -153,9 +283,12 @@ namespace signorini
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
     fe_values[displacement].get_function_symmetric_gradients(u, strain);
-    internal = 0;
-    if (!material.template mean_dilatation<dim>(
-          fe_values.get_fe().reference_cell().is_simplex()))
+    internal        = 0;
+    const bool mean = material.template mean_dilatation<dim>(
+      fe_values.get_fe().reference_cell().is_simplex());
+    if (material.axisymmetric())
+      return revolved_internal_force(material, mean, fe_values, u, internal);
+    if (!mean)
       {
         double strain_energy = 0.;
         for (const unsigned int q : fe_values.quadrature_point_indices())

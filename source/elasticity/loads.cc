@@ -33,11 +33,12 @@ namespace signorini
     const auto integrate = [&](const auto &values, const Function<dim> &f) {
       for (const unsigned int q : values.quadrature_point_indices())
         {
-          f.vector_value(values.quadrature_point(q), value);
+          const Point<dim> &x   = values.quadrature_point(q);
+          const double      JxW = values.JxW(q) * discretisation.weight(x);
+          f.vector_value(x, value);
           for (unsigned int i = 0; i < n; ++i)
             cell_load(i) += values.shape_value(i, q) *
-                            value(fe.system_to_component_index(i).first) *
-                            values.JxW(q);
+                            value(fe.system_to_component_index(i).first) * JxW;
         }
     };
 
@@ -86,7 +87,9 @@ namespace signorini
                   fe_face_values.reinit(cell, f);
                   for (const unsigned int q :
                        fe_face_values.quadrature_point_indices())
-                    area += fe_face_values.JxW(q);
+                    area +=
+                      fe_face_values.JxW(q) *
+                      discretisation.weight(fe_face_values.quadrature_point(q));
                 }
         area = Utilities::MPI::sum(area, discretisation.mpi_communicator());
         Vector<double> value(dim);

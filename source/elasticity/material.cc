@@ -9,8 +9,10 @@ namespace signorini
 
   namespace
   {
-    const Choices<bool> plane_states{{false, "plane strain"},
-                                     {true, "plane stress"}};
+    const Choices<Material::PlaneState> plane_states{
+      {Material::PlaneState::plane_strain, "plane strain"},
+      {Material::PlaneState::plane_stress, "plane stress"},
+      {Material::PlaneState::axisymmetric, "axisymmetric"}};
     const Choices<Material::VolumetricStrain> volumetric_strains{
       {Material::VolumetricStrain::automatic, "automatic"},
       {Material::VolumetricStrain::pointwise, "pointwise"},
@@ -32,10 +34,15 @@ namespace signorini
       Patterns::Double(-1., 0.5),
       "Poisson's ratio nu [-], between -1 and 0.5 (exclusive).");
     prm.declare_entry("Plane state",
-                      plane_states.name(defaults.plane_stress),
+                      plane_states.name(defaults.plane_state),
                       plane_states.pattern(),
-                      "2D only: plane strain (thick body, eps_zz = 0) or plane "
-                      "stress (thin plate, sigma_zz = 0).");
+                      "2D only: plane strain (thick body, eps_zz = 0), plane "
+                      "stress (thin plate, sigma_zz = 0) or axisymmetric (a "
+                      "body of revolution about the y axis: x is the radius r "
+                      ">= 0 and y the axial coordinate z; the hoop strain is "
+                      "u_r / r, nodes on the axis x = 0 get u_r = 0 by "
+                      "themselves, and every force is that of the whole "
+                      "revolution [N]).");
     prm.declare_entry(
       "Volumetric strain",
       volumetric_strains.name(defaults.volumetric_strain),
@@ -45,9 +52,11 @@ namespace signorini
       "stress output. pointwise: the standard displacement element, which "
       "locks (is far too stiff) as nu -> 0.5. cell mean: div u replaced by "
       "its mean over the cell (mean dilatation, B-bar), free of locking. "
-      "automatic: cell mean from nu = 0.4 on in plane strain and 3D, "
-      "pointwise otherwise. P1 triangles and tetrahedra always take it "
-      "pointwise and lock as nu -> 0.5: a warning says so from nu = 0.4 on.");
+      "automatic: cell mean from nu = 0.4 on in plane strain, axisymmetric "
+      "models and 3D, pointwise otherwise. P1 triangles and tetrahedra "
+      "always take it pointwise and lock as nu -> 0.5: a warning says so "
+      "from nu = 0.4 on. In an axisymmetric model div u includes the hoop "
+      "strain and the mean is over the revolved cell.");
     prm.leave_subsection();
   }
 
@@ -57,7 +66,7 @@ namespace signorini
     prm.enter_subsection("Material");
     young_modulus = prm.get_double("Young's modulus");
     poisson_ratio = prm.get_double("Poisson's ratio");
-    plane_stress =
+    plane_state =
       plane_states.value(prm.get("Plane state"), "Material/Plane state");
     volumetric_strain = volumetric_strains.value(prm.get("Volumetric strain"),
                                                  "Material/Volumetric strain");
@@ -87,7 +96,7 @@ namespace signorini
   {
     const double lambda = young_modulus * poisson_ratio /
                           ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
-    if (dim == 2 && plane_stress)
+    if (dim == 2 && plane_state == PlaneState::plane_stress)
       return 2. * lambda * mu() / (lambda + 2. * mu());
     return lambda;
   }
@@ -101,7 +110,8 @@ namespace signorini
       throw InputError("Material/Volumetric strain",
                        "'cell mean' needs quadrilaterals or hexahedra (Q1); "
                        "this mesh has triangles or tetrahedra (P1)");
-    if (poisson_ratio < nearly_incompressible || plane_stress)
+    if (poisson_ratio < nearly_incompressible ||
+        plane_state == PlaneState::plane_stress)
       return "";
     return "Material/Poisson's ratio = " + number(poisson_ratio) +
            ": P1 triangles and tetrahedra lock as nu -> 0.5 (the body comes "
@@ -125,7 +135,7 @@ namespace signorini
           break;
       }
     return poisson_ratio >= nearly_incompressible &&
-           !(dim == 2 && plane_stress);
+           !(dim == 2 && plane_state == PlaneState::plane_stress);
   }
 
   template <int dim>
@@ -155,7 +165,7 @@ namespace signorini
   double
   Material::out_of_plane_stress(const double volumetric) const
   {
-    if (dim != 2 || plane_stress)
+    if (dim != 2 || plane_state == PlaneState::plane_stress)
       return 0.;
     return lambda<dim>() * volumetric;
   }

@@ -128,6 +128,15 @@ namespace signorini
     const double     rate      = half_size > 0. ? 1. / half_size : 1.;
 
     std::vector<RigidMode<dim>> modes;
+    if (discretisation.axisymmetric())
+      {
+        // A body of revolution moves rigidly along its axis only (the axis
+        // holds it radially, and it cannot turn in its section).
+        RigidMode<dim> along_axis;
+        along_axis.translation[1] = 1.;
+        along_axis.centre         = centre;
+        return {along_axis};
+      }
     for (unsigned int d = 0; d < dim; ++d)
       {
         RigidMode<dim> mode;

@@ -1,4 +1,5 @@
 #include <signorini/input/entry_text.h>
+#include <signorini/input/input_error.h>
 #include <signorini/input/parameters.h>
 
 #include <sstream>
@@ -16,7 +17,8 @@ namespace signorini
         "Dimension",
         entry_text::of(default_dimension),
         Patterns::Integer(2, 3),
-        "Space dimension: 2 (plane strain or plane stress) or 3.");
+        "Space dimension: 2 (plane strain, plane stress or axisymmetric: "
+        "Material/Plane state) or 3.");
     }
 
     /** @p text, ShortPRM output of a ParameterHandler, with the value of
@@ -126,6 +128,18 @@ namespace signorini
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
+    if (material.axisymmetric())
+      {
+        if (dim != 2)
+          throw InputError("Material/Plane state",
+                           "axisymmetric is a 2D model in (r, z) = (x, y); "
+                           "set Dimension = 2");
+        if (boundary_conditions.traction_resultant &&
+            (*boundary_conditions.traction_resultant)[0] != 0.)
+          throw InputError("Boundary conditions/Traction resultant",
+                           "an axisymmetric body's resultant is axial: its "
+                           "first (radial) component must be 0");
+      }
 
     std::ostringstream printed;
     prm.print_parameters(printed, ParameterHandler::ShortPRM);

@@ -11,6 +11,10 @@ namespace signorini
     const Choices<Refinement::Strategy> strategies{
       {Refinement::Strategy::global, "global"},
       {Refinement::Strategy::kelly, "kelly"}};
+
+    const Choices<Refinement::KellyWeight> kelly_weights{
+      {Refinement::KellyWeight::revolution, "revolution"},
+      {Refinement::KellyWeight::section, "section"}};
   } // namespace
 
   void
@@ -41,6 +45,16 @@ namespace signorini
                       entry_text::of(defaults.coarsen_fraction),
                       Patterns::Double(0., 1.),
                       "kelly: fraction of the cells coarsened per cycle.");
+    prm.declare_entry(
+      "Kelly weight",
+      kelly_weights.name(defaults.kelly_weight),
+      kelly_weights.pattern(),
+      "Axisymmetric models only: revolution weights the Kelly indicators "
+      "by 2 pi r, as every other integral, so that the cycles spread the "
+      "energy error of the revolved body evenly; section leaves them "
+      "unweighted, the error of the (r, z) section, which refines near the "
+      "axis as much as away from it (for a quantity on the axis, such as "
+      "the peak pressure of a sphere).");
     prm.leave_subsection();
   }
 
@@ -53,6 +67,8 @@ namespace signorini
       strategies.value(prm.get("Strategy"), "Mesh refinement/Strategy");
     refine_fraction  = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
+    kelly_weight     = kelly_weights.value(prm.get("Kelly weight"),
+                                       "Mesh refinement/Kelly weight");
     prm.leave_subsection();
     if (refine_fraction + coarsen_fraction > 1.)
       throw InputError("Mesh refinement/Coarsen fraction",

@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
+#include <signorini/elasticity/axisymmetry.h>
 #include <signorini/output/solution_piece.h>
 
 #include <optional>
@@ -45,7 +46,7 @@ namespace signorini
       if (cell->is_locally_owned())
         cells.push_back(cell);
 
-    const std::vector<std::string> names = DisplacementFields<dim>::names();
+    const std::vector<std::string> names = in.fields.names();
     VtuPiece                       piece;
     piece.fields.push_back({"displacement", 3, {}});
     for (const auto &name : names)
@@ -84,15 +85,20 @@ namespace signorini
     const bool                mean_dilatation =
       in.fields.material_law().template mean_dilatation<dim>(
         fe.reference_cell().is_simplex());
+    const bool        revolved = in.fields.material_law().axisymmetric();
     const QGauss<dim> cell_quadrature(fe.degree + 1);
     const auto work = [&](const std::size_t begin, const std::size_t end) {
-      // With mean dilatation, the mean of div u over each cell.
+      // With mean dilatation, the mean of div u over each cell (over the
+      // revolved cell, with the hoop strain, in an axisymmetric model).
       std::optional<FEValues<dim>> cell_values;
       if (mean_dilatation)
         cell_values.emplace(in.mapping,
                             fe,
                             cell_quadrature,
-                            update_gradients | update_JxW_values);
+                            update_gradients | update_JxW_values |
+                              (revolved ?
+                                 update_values | update_quadrature_points :
+                                 update_default));
       double                               cell_mean = 0.;
       FEValues<dim>                        fe_values(in.mapping,
                               fe,
@@ -127,11 +133,21 @@ namespace signorini
               for (const unsigned int q :
                    cell_values->quadrature_point_indices())
                 {
+                  const double JxW =
+                    cell_values->JxW(q) *
+                    (revolved ?
+                       axisymmetry::weight(cell_values->quadrature_point(q)) :
+                       1.);
                   for (unsigned int i = 0; i < n_dofs; ++i)
-                    dilatation += u[i] *
-                                  cell_values->shape_grad(i, q)[component[i]] *
-                                  cell_values->JxW(q);
-                  volume += cell_values->JxW(q);
+                    {
+                      double divergence =
+                        cell_values->shape_grad(i, q)[component[i]];
+                      if (revolved && component[i] == 0)
+                        divergence += cell_values->shape_value(i, q) /
+                                      cell_values->quadrature_point(q)[0];
+                      dilatation += u[i] * divergence * JxW;
+                    }
+                  volume += JxW;
                 }
               cell_mean = dilatation / volume;
             }

@@ -82,12 +82,17 @@ namespace signorini
     // Where a support fixes a component of a contact node, K u - f there
     // is the support's reaction and the obstacle's force together: the
     // obstacle's share is its own.
-    const auto zone = evaluate_contact_zone(discretisation,
+    auto zone = evaluate_contact_zone(discretisation,
                                             contact_surface,
                                             pressure,
                                             parameters.reference);
     if (zone.supported)
       contact_force += zone.supported_force;
+    // The radial forces of a whole revolution cancel: its resultants are
+    // axial (the sums of the radial nodal forces are not resultants).
+    const bool revolution = discretisation.axisymmetric();
+    if (revolution)
+      contact_force[0] = 0.;
     penetration = Utilities::MPI::max(penetration, mpi_communicator);
     row.add_count("active_set", active);
     strategy->report(row, pcout);
@@ -110,6 +115,12 @@ namespace signorini
       evaluate_balance(discretisation, loads, parameters.material, solution);
     if (zone.supported)
       balance.support_reaction -= zone.supported_force;
+    if (revolution)
+      {
+        balance.applied_force[0]    = 0.;
+        balance.support_reaction[0] = 0.;
+        zone.pressure_resultant[0]  = 0.;
+      }
     row.add("max_pressure", zone.max_pressure);
     row.add("contact_width", zone.contact_width);
     std::ostringstream contact_columns;
@@ -208,7 +219,10 @@ namespace signorini
     VectorType active(owned_dofs, relevant_dofs, mpi_communicator);
     active = owned_active;
 
-    const DisplacementFields<dim> fields(parameters.material, *obstacle);
+    const DisplacementFields<dim> fields(parameters.material,
+                                         *obstacle,
+                                         axisymmetry::axis_tolerance(
+                                           discretisation.body_size()));
     const std::vector<double>     relevant_displacement =
       relevant_entries(solution, relevant_dofs);
     const std::vector<double> relevant_pressure =

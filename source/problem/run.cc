@@ -4,6 +4,7 @@
 #include <signorini/base/interruption.h>
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
+#include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/rigid_motions.h>
 #include <signorini/problem/contact_problem.h>
 
@@ -182,12 +183,20 @@ namespace signorini
     TimerOutput::Scope t(timer, "Refine: error estimate");
     estimated_error_per_cell.reinit(
       discretisation.triangulation().n_active_cells());
+    // Weighted by 2 pi r in an axisymmetric model, as its energy norm is,
+    // unless the scene asks for the error of the section.
+    const axisymmetry::KellyCoefficient<dim> revolved;
+    const bool                               weighted =
+      discretisation.axisymmetric() &&
+      parameters.refinement.kelly_weight == Refinement::KellyWeight::revolution;
     KellyErrorEstimator<dim>::estimate(discretisation.mapping(),
                                        discretisation.dof_handler(),
                                        discretisation.face_quadrature(),
                                        {},
                                        solution,
-                                       estimated_error_per_cell);
+                                       estimated_error_per_cell,
+                                       ComponentMask(),
+                                       weighted ? &revolved : nullptr);
   }
 
   template <int dim>

@@ -20,7 +20,8 @@ namespace signorini
     , discretisation(parameters.geometry,
                      parameters.refinement,
                      parameters.boundary_conditions,
-                     mpi_communicator)
+                     mpi_communicator,
+                     parameters.material.axisymmetric())
     , loads(parameters.boundary_conditions, discretisation)
     , elastic_operator(
         std::make_unique<AssembledOperator<dim>>(discretisation,

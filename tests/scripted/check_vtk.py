@@ -19,6 +19,11 @@ FIELDS_2D = {"displacement": 3, "von_mises": 1, "stress_xx": 1,
              "contact_pressure": 1, "active_set": 1, "gap": 1,
              "kelly_indicator": 1, "mpi_rank": 1}
 FIELDS_3D = dict(FIELDS_2D, stress_xz=1, stress_yz=1)
+# An axisymmetric model's stresses are named by its axes r, z and the hoop.
+FIELDS_AXISYMMETRIC = {
+    name: n for name, n in FIELDS_2D.items() if not name.startswith("stress")}
+FIELDS_AXISYMMETRIC.update(stress_rr=1, stress_zz=1, stress_hoop=1,
+                           stress_rz=1)
 
 
 def open_file(path):
@@ -51,7 +56,10 @@ def check(path):
     if path.name != "obstacle.vtu":
         bounds = data.GetBounds()
         dim = 3 if bounds[5] - bounds[4] > 0 else 2
-        for name, components in (FIELDS_3D if dim == 3 else FIELDS_2D).items():
+        expected = FIELDS_3D if dim == 3 else FIELDS_2D
+        if "stress_hoop" in fields:
+            expected = FIELDS_AXISYMMETRIC
+        for name, components in expected.items():
             if name not in fields:
                 problems.append("no field " + name)
             elif fields[name].GetNumberOfComponents() != components:

@@ -274,7 +274,9 @@ namespace
         Material material;
         material.young_modulus = E;
         material.poisson_ratio = nu;
-        material.plane_stress  = plane_stress;
+        material.plane_state   = plane_stress ?
+                                   Material::PlaneState::plane_stress :
+                                   Material::PlaneState::plane_strain;
         CellStiffness<2> stiffness(material);
 
         Triangulation<2> tria;

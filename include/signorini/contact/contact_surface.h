@@ -50,7 +50,8 @@ namespace signorini
     /** Which obstacle the node faces (its index in the ObstacleSet). */
     unsigned int obstacle = 0;
     /** Lumped contact-boundary mass, integral of the shape function over
-     * the contact boundary [mm^(dim-1)]; set on owned nodes only. */
+     * the contact boundary [mm^(dim-1); mm^2 over the revolution of an
+     * axisymmetric model]; set on owned nodes only. */
     double mass = 0.;
     bool   owned;
     /** In the contact strategy's active set. */

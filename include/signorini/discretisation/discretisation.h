@@ -5,6 +5,7 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -12,6 +13,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <signorini/discretisation/geometry.h>
+#include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/boundary_conditions.h>
 #include <signorini/mesh_adaptation/refinement_parameters.h>
 
@@ -31,7 +33,9 @@ namespace signorini
    * comes from), the finite element (Q1 on quadrilaterals/hexahedra, P1 on
    * triangles/tetrahedra, dim components), the mapping and quadratures, the
    * dofs with their index sets, and the constraints that stay fixed within a
-   * cycle: hanging nodes, and those plus the Dirichlet data.
+   * cycle: hanging nodes, and those plus the Dirichlet data (and, in an
+   * axisymmetric model, u_r = 0 on the axis). It gives the weight of the
+   * measure at a point, 1, or 2 pi r in an axisymmetric model.
    */
   template <int dim>
   class Discretisation
@@ -39,10 +43,13 @@ namespace signorini
   public:
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
+    /** @p axisymmetric: the mesh is the (r, z) half-plane of a body of
+     * revolution (see elasticity/axisymmetry.h). */
     Discretisation(const Geometry<dim>           &geometry,
                    const Refinement              &refinement,
                    const BoundaryConditions<dim> &boundary_conditions,
-                   const MPI_Comm                 mpi_communicator);
+                   const MPI_Comm                 mpi_communicator,
+                   const bool                     axisymmetric = false);
     ~Discretisation();
 
     /** The boundary ids that an entry (named first) refers to. */
@@ -51,7 +58,8 @@ namespace signorini
 
     /** The mesh of cycle 0, with its element, mapping and quadratures, and
      * its dofs. Throws InputError for a mesh that mixes cell types, or one
-     * that lacks a boundary id of @p boundary_ids (naming the entry). */
+     * that lacks a boundary id of @p boundary_ids (naming the entry), or an
+     * axisymmetric one that crosses the axis. */
     void
     make_grid(const BoundaryIdUse &boundary_ids);
 
@@ -99,6 +107,39 @@ namespace signorini
     bool
     simplex() const;
 
+    /** Whether the model is axisymmetric. */
+    bool
+    axisymmetric() const;
+
+    /** The weight of the measure at @p x: 1, or 2 pi r in an axisymmetric
+     * model, where every integral is over the whole revolution. Integrals
+     * over cells and faces multiply their JxW values by it. */
+    double
+    weight(const dealii::Point<dim> &x) const
+    {
+      return axisymmetric_model ? axisymmetry::weight(x) : 1.;
+    }
+
+    /** The weight at quadrature point @p q of @p values, which has the
+     * flags of weight_flags(). */
+    double
+    weight(const dealii::FEValuesBase<dim> &values, const unsigned int q) const
+    {
+      return axisymmetric_model ?
+               axisymmetry::weight(values.quadrature_point(q)) :
+               1.;
+    }
+
+    /** What FEValues must compute for weight(values, q): the quadrature
+     * points of an axisymmetric model, nothing otherwise (asking a mapping
+     * for points can change its Jacobians in the last bit). */
+    dealii::UpdateFlags
+    weight_flags() const
+    {
+      return axisymmetric_model ? dealii::update_quadrature_points :
+                                  dealii::update_default;
+    }
+
     const dealii::Triangulation<dim> &
     triangulation() const;
     const dealii::DoFHandler<dim> &
@@ -122,7 +163,7 @@ namespace signorini
     const dealii::AffineConstraints<double> &
     constraints() const;
     /** Dofs on a Dirichlet boundary in a fixed component: where the support
-     * reactions act. */
+     * reactions act (not the axis of an axisymmetric model). */
     const dealii::IndexSet &
     support_dofs() const;
     MPI_Comm
@@ -136,6 +177,7 @@ namespace signorini
     const Refinement              &refinement;
     const BoundaryConditions<dim> &boundary_conditions;
     MPI_Comm                       communicator;
+    const bool                     axisymmetric_model;
 
     std::unique_ptr<MeshAdaptation<dim>>        mesh_adaptation;
     std::unique_ptr<dealii::Triangulation<dim>> mesh;

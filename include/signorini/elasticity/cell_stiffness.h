@@ -24,6 +24,13 @@ namespace signorini
    * by the first edge's length), so a cached matrix is the computed one to
    * round-off. Cells of curved meshes rarely repeat: after a number of
    * shapes without repetition the cache stops storing new ones.
+   *
+   * In an axisymmetric model the matrix is the integral over the revolved
+   * cell, eps : sigma with the hoop strain, times 2 pi r: it depends on the
+   * cell's distance from the axis. The shape then includes the first
+   * vertex's r divided by the edge length, so that cells share a matrix
+   * only if one is a copy of the other scaled about the axis and moved
+   * along it, and K(s x) = s K(x).
    */
   template <int dim>
   class CellStiffness
@@ -47,30 +54,42 @@ namespace signorini
     const dealii::FullMatrix<double> *
     cached(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
 
-    /** The matrix of the cell @p fe_values was reinit'ed on, computed. */
+    /** The matrix of the cell @p fe_values was reinit'ed on, computed;
+     * @p fe_values has the flags of elastic_update_flags(). */
     void
     compute(const dealii::FEValues<dim> &fe_values,
             dealii::FullMatrix<double>  &cell_matrix) const;
 
   private:
     static constexpr unsigned int max_vertices = 1U << dim;
-    using Shape = std::array<double, dim *(max_vertices - 1)>;
+    /** The vertex offsets, then the first vertex's r (axisymmetric; else
+     * zero). */
+    using Shape = std::array<double, dim *(max_vertices - 1) + 1>;
 
-    /** The vertex offsets of @p cell divided by its first edge's length,
-     * @p scale. */
-    static Shape
+    /** The vertex offsets of @p cell (and the first vertex's r) divided by
+     * its first edge's length, @p scale. */
+    Shape
     shape_of(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-             double &scale);
+             double &scale) const;
 
-    const Material                             &material;
+    const Material &material;
+    /** Whether the matrix of a cell scaled by s is s times the unscaled
+     * one's (3D, axisymmetric), or the same (2D plane states). */
+    const bool                                  scales_linearly;
     std::map<Shape, dealii::FullMatrix<double>> cache;
     unsigned int                                lookups = 0;
     dealii::FullMatrix<double>                  scaled;
   };
+  /** What FEValues must compute for CellStiffness::compute() and
+   * cell_internal_force(): gradients and JxW values, and the shape values
+   * and quadrature points of an axisymmetric model. */
+  dealii::UpdateFlags
+  elastic_update_flags(const Material &material);
+
   /** The internal force vector of the cell @p fe_values was reinit'ed on
-   * (with gradients and JxW values), the integral of eps(phi_i) : sigma(u)
-   * [N], for the ghosted displacement @p u; returns the cell's strain energy
-   * 1/2 a(u,u) [N mm]. */
+   * (with the flags of elastic_update_flags()), the integral of
+   * eps(phi_i) : sigma(u) [N], for the ghosted displacement @p u; returns the
+   * cell's strain energy 1/2 a(u,u) [N mm]. */
   template <int dim>
   double
   cell_internal_force(const Material                              &material,

@@ -17,7 +17,8 @@ namespace signorini
   /**
    * The loads on the body: body force and traction (Boundary conditions),
    * with a Traction resultant turned into the uniform traction of that force
-   * on each mesh.
+   * on each mesh. Integrals are weighted by Discretisation::weight (over the
+   * whole revolution of an axisymmetric model).
    */
   template <int dim>
   class Loads

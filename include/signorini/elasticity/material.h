@@ -11,16 +11,38 @@ namespace signorini
   /**
    * Isotropic linear elasticity: subsection `Material`. Lamé constants
    * mu = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - 2 nu)); in 2D plane
-   * stress replaces lambda by 2 lambda mu / (lambda + 2 mu).
+   * stress replaces lambda by 2 lambda mu / (lambda + 2 mu). The 2D model
+   * (`Plane state`) says what the third direction does: nothing (plane
+   * strain), carries no stress (plane stress), or is the hoop direction of
+   * a body of revolution (axisymmetric: x = r, y = z, the 3D law with the
+   * hoop strain u_r / r; see elasticity/axisymmetry.h).
    */
   struct Material
   {
+    /** How a 2D model closes the third direction. */
+    enum class PlaneState
+    {
+      /** eps_zz = 0. */
+      plane_strain,
+      /** sigma_zz = 0. */
+      plane_stress,
+      /** (x, y) = (r, z) of a body of revolution; eps_theta = u_r / r. */
+      axisymmetric
+    };
+
     /** E [MPa = N/mm^2]. */
     double young_modulus = 2.1e5;
     /** nu [-]. */
     double poisson_ratio = 0.3;
-    /** 2D: plane stress (sigma_zz = 0) instead of plane strain. */
-    bool plane_stress = false;
+    /** The 2D model (ignored in 3D, where axisymmetric is refused). */
+    PlaneState plane_state = PlaneState::plane_strain;
+
+    /** Whether the model is axisymmetric. */
+    bool
+    axisymmetric() const
+    {
+      return plane_state == PlaneState::axisymmetric;
+    }
 
     /** How Q1 cells take the volumetric strain div u. */
     enum class VolumetricStrain
@@ -52,7 +74,7 @@ namespace signorini
 
     /** Whether cells of the element of @p simplex kind (triangles and
      * tetrahedra: true) take the mean of the volumetric strain over the
-     * cell: Q1 only, in plane strain and 3D. */
+     * cell: Q1 only, in plane strain, axisymmetric models and 3D. */
     template <int dim>
     bool
     mean_dilatation(const bool simplex) const;
@@ -63,7 +85,8 @@ namespace signorini
     std::string
     check_element(const bool simplex) const;
 
-    /** The first Lamé constant, modified for plane stress in 2D. */
+    /** The first Lamé constant, modified for plane stress in 2D (the 3D
+     * one in plane strain and axisymmetric models). */
     template <int dim>
     double
     lambda() const;
@@ -80,8 +103,10 @@ namespace signorini
     stress(const dealii::SymmetricTensor<2, dim> &strain,
            const double                           volumetric) const;
 
-    /** The out-of-plane stress sigma_zz of a 2D state (zero in plane stress
-     * and in 3D, where it is part of the stress tensor). */
+    /** The out-of-plane stress sigma_zz of a plane state (zero in plane
+     * stress and in 3D, where it is part of the stress tensor; an
+     * axisymmetric model's hoop stress needs the hoop strain: stress<3>() of
+     * its revolved strain). */
     template <int dim>
     double
     out_of_plane_stress(const dealii::SymmetricTensor<2, dim> &strain) const;

@@ -35,9 +35,8 @@ namespace signorini
    * come first (rigid_motions_held names a free motion by the last mode of
    * this list it needs). The rotations turn about the centre of the initial
    * mesh's bounding box at a rate of one over its half diagonal, so that
-   * every mode moves the body by about one. A model with fewer rigid
-   * motions (an axisymmetric body: the translation along its axis only)
-   * returns its own list here. Collective.
+   * every mode moves the body by about one. An axisymmetric body moves
+   * rigidly along its axis (y) only. Collective.
    */
   template <int dim>
   std::vector<RigidMode<dim>>

@@ -14,6 +14,16 @@ namespace signorini
       kelly
     };
 
+    /** What an axisymmetric model's Kelly indicators measure. */
+    enum class KellyWeight
+    {
+      /** The error of the revolved body: face integrals weighted by
+       * 2 pi r. */
+      revolution,
+      /** The error of the (r, z) section: unweighted. */
+      section
+    };
+
     /** Solve-estimate-refine cycles. */
     unsigned int n_cycles = 1;
     Strategy     strategy = Strategy::kelly;
@@ -21,6 +31,8 @@ namespace signorini
     double refine_fraction = 0.3;
     /** kelly: fraction of the cells coarsened per cycle. */
     double coarsen_fraction = 0.03;
+    /** kelly, axisymmetric models: the weight of the indicators. */
+    KellyWeight kelly_weight = KellyWeight::revolution;
 
     /** Declares the entries, with the defaults of a default-constructed
      * instance. */

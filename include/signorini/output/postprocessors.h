@@ -18,12 +18,17 @@ namespace signorini
    * `stress_zz`, `stress_xy`[, `stress_xz`, `stress_yz`] [MPa], then `gap`
    * [mm], the gap of the deformed point along the obstacle's normal,
    * y + u_y - psi(x) (z + u_z - psi(x, y) in 3D), negative inside it. In 2D,
-   * stress_zz is the out-of-plane stress (zero in plane stress).
+   * stress_zz is the out-of-plane stress (zero in plane stress). An
+   * axisymmetric model names them by its axes, r = x and z = y:
+   * `stress_rr`, `stress_zz` (axial), `stress_hoop` (sigma_theta_theta) and
+   * `stress_rz`, and von Mises includes the hoop stress.
    *
    * One call evaluates all of them from the displacement and its gradient,
    * which the output computes once per point for every field. Cells with
    * mean dilatation (Material::mean_dilatation) pass the cell's mean
-   * volumetric strain, which the stress takes instead of div u.
+   * volumetric strain, which the stress takes instead of div u (in an
+   * axisymmetric model the mean over the revolved cell of div u with the
+   * hoop strain).
    */
   template <int dim>
   class DisplacementFields
@@ -32,11 +37,15 @@ namespace signorini
     /** The number of fields. */
     static constexpr unsigned int n_fields = (dim == 2 ? 5 : 7) + 1;
 
-    DisplacementFields(const Material &material, const Obstacle<dim> &obstacle);
+    /** @p axis_tolerance: points of an axisymmetric model closer to the
+     * axis are on it [mm]. */
+    DisplacementFields(const Material      &material,
+                       const Obstacle<dim> &obstacle,
+                       const double         axis_tolerance = 0.);
 
     /** The names of the fields, in the order evaluate() fills them. */
-    static std::vector<std::string>
-    names();
+    std::vector<std::string>
+    names() const;
 
     /** Fills @p fields (n_fields values) at the point @p point, where the
      * displacement is @p displacement with the gradient @p gradient (row i:
@@ -56,6 +65,7 @@ namespace signorini
   private:
     const Material      &material;
     const Obstacle<dim> &obstacle;
+    const double         axis_tolerance;
   };
 } // namespace signorini
 

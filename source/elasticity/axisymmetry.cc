@@ -1,0 +1,68 @@
+#include <signorini/base/text.h>
+#include <signorini/elasticity/axisymmetry.h>
+#include <signorini/input/input_error.h>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  namespace axisymmetry
+  {
+    template <int dim>
+    void
+    add_axis_constraints(const DoFHandler<dim>     &dofs,
+                         const IndexSet            &relevant_dofs,
+                         const double               tolerance,
+                         AffineConstraints<double> &constraints)
+    {
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const unsigned int v : cell->vertex_indices())
+            if (std::abs(cell->vertex(v)[0]) <= tolerance)
+              {
+                const auto radial = cell->vertex_dof_index(v, 0);
+                if (relevant_dofs.is_element(radial) &&
+                    !constraints.is_constrained(radial))
+                  constraints.add_line(radial);
+              }
+    }
+
+    template <int dim>
+    void
+    check_side_of_axis(const Triangulation<dim> &coarse_mesh,
+                       const Geometry<dim>      &geometry,
+                       const double              tolerance)
+    {
+      double r_min = 0.;
+      for (const auto &vertex : coarse_mesh.get_vertices())
+        r_min = std::min(r_min, vertex[0]);
+      if (r_min >= -tolerance)
+        return;
+      using Type        = typename Geometry<dim>::Type;
+      std::string entry = "Geometry/Mesh file";
+      if (geometry.type == Type::rectangle)
+        entry = "Geometry/Lower left corner";
+      else if (geometry.type != Type::gmsh)
+        entry = "Geometry/Center";
+      throw InputError(entry,
+                       "the body reaches x = " + number(r_min) +
+                         " mm; an axisymmetric body (Material/Plane state) "
+                         "lies at x = r >= 0, its axis at x = 0");
+    }
+
+    template void
+    add_axis_constraints(const DoFHandler<2> &,
+                         const IndexSet &,
+                         double,
+                         AffineConstraints<double> &);
+    template void
+    add_axis_constraints(const DoFHandler<3> &,
+                         const IndexSet &,
+                         double,
+                         AffineConstraints<double> &);
+    template void
+    check_side_of_axis(const Triangulation<2> &, const Geometry<2> &, double);
+    template void
+    check_side_of_axis(const Triangulation<3> &, const Geometry<3> &, double);
+  } // namespace axisymmetry
+} // namespace signorini
