@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <signorini/base/interruption.h>
 #include <signorini/program.h>
 
 int
@@ -9,5 +10,7 @@ main(int argc, char **argv)
   // cores estimates errors and builds output patches on both).
   dealii::Utilities::MPI::MPI_InitFinalize mpi(
     argc, argv, dealii::numbers::invalid_unsigned_int);
+  // SIGINT and SIGTERM stop the run after its files are consistent.
+  signorini::interruption::install();
   return signorini::run_program(argc, argv);
 }

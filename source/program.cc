@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/base/failures.h>
+#include <signorini/base/interruption.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parameter_file.h>
 #include <signorini/input/parameters.h>
@@ -223,9 +224,12 @@ namespace signorini
 
     /** "signorini: error: WHAT", fit for a terminal. */
     std::string
-    error_line(const std::string &what)
+    error_line(const std::string &what, const std::string &where = "")
     {
-      return text_check::printable("signorini: error: " + what);
+      // Only the message is shortened, so that how much of it is shown does
+      // not depend on the length of the file's path.
+      return "signorini: error: " + text_check::printable(where) +
+             text_check::printable(what);
     }
   } // namespace
 
@@ -287,13 +291,19 @@ namespace signorini
       }
     catch (const InputError &error)
       {
-        err << error_line((error.location.empty() ? file : error.location) +
-                          (error.entry.empty() ?
-                             std::string() :
-                             ": entry '" + error.entry + "'") +
-                          ": " + error.what())
+        err << error_line(error.what(),
+                          (error.location.empty() ? file : error.location) +
+                            (error.entry.empty() ?
+                               std::string() :
+                               ": entry '" + error.entry + "'") +
+                            ": ")
             << std::endl;
         return exit_status::input_error;
+      }
+    catch (const Interrupted &stop)
+      {
+        err << "signorini: " << stop.message(file) << std::endl;
+        return stop.status();
       }
     catch (const SolverFailure &failure)
       {

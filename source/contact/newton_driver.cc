@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <signorini/base/failures.h>
+#include <signorini/base/interruption.h>
 #include <signorini/base/text.h>
 #include <signorini/contact/newton_driver.h>
 
@@ -219,6 +220,7 @@ namespace signorini
     for (unsigned int iteration = 1; iteration <= parameters.max_iterations;
          ++iteration)
       {
+        interruption::check(discretisation.mpi_communicator());
         const bool contact_free = visited.back().first == 0;
         assemble_newton_system();
         solve(settled);

@@ -248,7 +248,13 @@ namespace signorini
       const std::size_t head = max_length * 2 / 3, tail = max_length / 4;
       for (std::size_t k = 0; k < head; ++k)
         result += units[k];
-      result += " [... " + std::to_string(units.size() - head - tail) +
+      // Long runs counted in thousands: the count does not change with the
+      // length of a path in the message.
+      const std::size_t left_out = units.size() - head - tail;
+      result += " [... " +
+                (left_out < 1000 ?
+                   std::to_string(left_out) :
+                   "about " + std::to_string((left_out + 500) / 1000) + "k") +
                 " characters left out ...] ";
       for (std::size_t k = units.size() - tail; k < units.size(); ++k)
         result += units[k];

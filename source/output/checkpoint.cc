@@ -3,16 +3,26 @@
 
 #include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
+#include <signorini/output/atomic_file.h>
 #include <signorini/output/checkpoint.h>
-#include <signorini/output/file_output.h>
+#include <signorini/output/checkpoint_manifest.h>
 #include <signorini/output/output_series.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iostream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <sstream>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 #include <tuple>
+#include <unistd.h>
 #include <vector>
 
 namespace signorini
@@ -45,8 +55,6 @@ namespace signorini
 
   namespace
   {
-    const std::string magic = "signorini checkpoint 1";
-
     /** "Subsection/Entry" -> value of a parameter text in ShortPRM form. */
     std::vector<std::pair<std::string, std::string>>
     entries(const std::string &text)
@@ -114,16 +122,24 @@ namespace signorini
       }
     };
 
-    /** Reads a "KEY SIZE\n" header and SIZE bytes after it. */
+    /** Whether the file system of @p directory has no space left for this
+     * process (root may use the blocks reserved for it). */
     bool
-    read_block(std::istream &in, const std::string &key, std::string &bytes)
+    file_system_full(const std::string &directory)
     {
-      std::string word;
-      std::size_t size = 0;
-      if (!(in >> word >> size) || word != key || in.get() != '\n')
+      struct statvfs status;
+      if (::statvfs(directory.c_str(), &status) != 0)
         return false;
-      bytes.resize(size);
-      return size == 0 || static_cast<bool>(in.read(&bytes[0], size));
+      return (::geteuid() == 0 ? status.f_bfree : status.f_bavail) == 0;
+    }
+
+    /** The size of the file @p path, 0 if it cannot be read. */
+    std::uint64_t
+    size_of(const std::string &path)
+    {
+      std::error_code error;
+      const auto      size = std::filesystem::file_size(path, error);
+      return error ? 0 : size;
     }
   } // namespace
 
@@ -150,6 +166,24 @@ namespace signorini
            ".state";
   }
 
+  std::vector<std::string>
+  Checkpoint::mesh_pieces(const unsigned int cycle) const
+  {
+    namespace fs = std::filesystem;
+    std::vector<std::string> names;
+    std::error_code          error;
+    for (const auto &entry : fs::directory_iterator(directory, error))
+      {
+        const std::string name   = entry.path().filename().string();
+        const auto        member = output_series::classify(name);
+        if (member.checkpoint && !member.partial && *member.cycle == cycle &&
+            entry.path().extension() != ".state")
+          names.push_back(name);
+      }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
   std::optional<unsigned int>
   Checkpoint::find_latest()
   {
@@ -157,38 +191,71 @@ namespace signorini
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         namespace fs = std::filesystem;
-        std::error_code error;
+        // The cycles of every checkpoint piece, newest first.
+        std::set<unsigned int, std::greater<unsigned int>> cycles;
+        std::error_code                                    error;
         if (fs::is_directory(directory, error))
           for (const auto &entry : fs::directory_iterator(directory, error))
             {
               const auto member =
                 output_series::classify(entry.path().filename().string());
-              if (member.checkpoint && !member.partial &&
-                  entry.path().extension() == ".state" &&
-                  (!found.exists || *member.cycle > found.cycle))
-                {
-                  found.exists = true;
-                  found.cycle  = *member.cycle;
-                }
+              if (member.checkpoint && !member.partial)
+                cycles.insert(*member.cycle);
             }
+        // A checkpoint without its state file is one whose writing was
+        // stopped (its state is written last): it is passed over with a
+        // note. One whose files are damaged is passed over with a warning,
+        // or refused if no intact one is left.
+        std::vector<std::string> faults;
+        CheckpointManifest       manifest;
+        for (const unsigned int cycle : cycles)
+          {
+            const std::string name = state_file(cycle);
+            std::ifstream     in(name, std::ios::binary);
+            if (!in)
+              {
+                std::cout << "Checkpoint of cycle " << cycle
+                          << " incomplete (no " << name
+                          << "; the run stopped while writing it): passed over"
+                          << std::endl;
+                continue;
+              }
+            std::string fault = manifest.read(
+              std::string(std::istreambuf_iterator<char>(in), {}));
+            if (!fault.empty())
+              fault = name + ": " + fault;
+            else if (manifest.cycle != cycle)
+              fault = name + ": damaged (it holds the checkpoint of cycle " +
+                      std::to_string(manifest.cycle) + ")";
+            else
+              fault = manifest.verify_pieces(directory);
+            if (fault.empty())
+              {
+                found.exists = true;
+                found.cycle  = cycle;
+                break;
+              }
+            faults.push_back(fault);
+          }
         if (found.exists)
           {
-            const std::string name = state_file(found.cycle);
-            std::ifstream     in(name, std::ios::binary);
-            std::string       header, saved_parameters;
-            unsigned int      cycle = 0;
-            std::string       cycle_word;
-            if (!std::getline(in, header) || header != magic ||
-                !(in >> cycle_word >> cycle) || cycle_word != "cycle" ||
-                cycle != found.cycle ||
-                !read_block(in, "parameters", saved_parameters) ||
-                !read_block(in, "state", found.state))
-              found.error = name + ": not a signorini checkpoint, or damaged";
-            else if (saved_parameters != parameter_text)
-              found.error = name + ": written by a different parameter set (" +
-                            first_difference(saved_parameters, parameter_text) +
-                            "); run without --resume to start afresh";
+            for (const auto &fault : faults)
+              std::cerr << "signorini: warning: " << fault
+                        << "; resuming from the checkpoint of cycle "
+                        << found.cycle << " instead" << std::endl;
+            if (manifest.parameters != parameter_text)
+              found.error =
+                state_file(found.cycle) +
+                ": written by a different parameter set (" +
+                first_difference(manifest.parameters, parameter_text) +
+                "); run without --resume to start afresh";
+            else
+              found.state = std::move(manifest.state);
           }
+        else if (!faults.empty())
+          found.error = faults.front() +
+                        "; no intact checkpoint to resume from (run without "
+                        "--resume to start afresh)";
       }
     found = Utilities::MPI::broadcast(mpi_communicator, found, 0);
     if (!found.error.empty())
@@ -213,9 +280,56 @@ namespace signorini
   Checkpoint::write_state(const unsigned int cycle,
                           const std::string &state) const
   {
+    // Each process reads a slice of every mesh piece for its checksum;
+    // process 0 joins the slices' checksums.
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    std::vector<std::pair<std::string, std::uint64_t>> pieces;
+    if (rank == 0)
+      for (const auto &name : mesh_pieces(cycle))
+        pieces.emplace_back(name, size_of(directory + "/" + name));
+    pieces = Utilities::MPI::broadcast(mpi_communicator, pieces, 0);
+    std::vector<std::pair<std::uint32_t, std::uint64_t>> slices;
+    std::string                                          error;
+    try
+      {
+        for (const auto &[name, size] : pieces)
+          {
+            const std::uint64_t begin = size * rank / n_ranks,
+                                end   = size * (rank + 1) / n_ranks;
+            const auto slice =
+              checksum_of_file(directory + "/" + name, begin, end - begin);
+            slices.emplace_back(slice.crc, slice.size);
+          }
+      }
+    catch (const std::exception &failure)
+      {
+        error = failure.what();
+      }
+    const auto all_slices =
+      Utilities::MPI::gather(mpi_communicator,
+                             std::make_pair(slices, error),
+                             0);
     write_collectively(mpi_communicator, [&]() {
-      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-        write_state_file(cycle, state);
+      if (rank != 0)
+        return;
+      std::vector<CheckpointManifest::Piece> checksums;
+      for (unsigned int i = 0; i < pieces.size(); ++i)
+        {
+          FileChecksum checksum;
+          for (const auto &[process_slices, process_error] : all_slices)
+            {
+              if (!process_error.empty())
+                throw std::runtime_error(process_error);
+              checksum = concatenate(checksum,
+                                     {process_slices[i].second,
+                                      process_slices[i].first});
+            }
+          checksums.push_back({pieces[i].first, checksum});
+        }
+      write_manifest(cycle, state, checksums);
     });
   }
 
@@ -223,13 +337,63 @@ namespace signorini
   Checkpoint::write_state_file(const unsigned int cycle,
                                const std::string &state) const
   {
-    write_atomically(state_file(cycle), [&](std::ostream &out) {
-      out << magic << '\n'
-          << "cycle " << cycle << '\n'
-          << "parameters " << parameter_text.size() << '\n'
-          << parameter_text << "state " << state.size() << '\n'
-          << state;
-    });
+    std::vector<CheckpointManifest::Piece> pieces;
+    for (const auto &name : mesh_pieces(cycle))
+      pieces.push_back({name, checksum_of_file(directory + "/" + name)});
+    write_manifest(cycle, state, pieces);
+  }
+
+  void
+  Checkpoint::check_mesh_pieces(const unsigned int cycle,
+                                const std::string &save_failure) const
+  {
+    const auto  pieces = mesh_pieces(cycle);
+    std::string fault;
+    // A write that reached the file-size limit was cut there.
+    struct rlimit limit;
+    if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+        limit.rlim_cur != RLIM_INFINITY)
+      for (const auto &name : pieces)
+        if (fault.empty() && size_of(directory + "/" + name) >= limit.rlim_cur)
+          fault = "cannot write '" + directory + "/" + name +
+                  "': " + std::strerror(EFBIG);
+    // One that found the file system full was cut short.
+    if (fault.empty() && file_system_full(directory))
+      fault =
+        "cannot write '" + mesh_file(cycle) + "*': " + std::strerror(ENOSPC);
+    // The pieces deal.II and p4est write.
+    for (const std::string suffix : {".mesh", ".mesh.info", ".mesh_fixed.data"})
+      {
+        const std::string name =
+          "checkpoint-" + Utilities::int_to_string(cycle, 2) + suffix;
+        if (fault.empty() &&
+            std::find(pieces.begin(), pieces.end(), name) == pieces.end())
+          fault = "cannot write '" + directory + "/" + name + "'" +
+                  (save_failure.empty() ? "" : ": " + save_failure);
+      }
+    if (fault.empty() && !save_failure.empty())
+      fault = "cannot write '" + mesh_file(cycle) + "': " + save_failure;
+    if (fault.empty())
+      return;
+    std::error_code error;
+    for (const auto &name : pieces)
+      std::filesystem::remove(directory + "/" + name, error);
+    throw std::runtime_error(fault);
+  }
+
+  void
+  Checkpoint::write_manifest(
+    const unsigned int                            cycle,
+    const std::string                            &state,
+    const std::vector<CheckpointManifest::Piece> &pieces) const
+  {
+    CheckpointManifest manifest;
+    manifest.cycle      = cycle;
+    manifest.parameters = parameter_text;
+    manifest.state      = state;
+    manifest.pieces     = pieces;
+    write_atomically(state_file(cycle),
+                     [&](std::ostream &out) { out << manifest.text(); });
     // The new checkpoint is complete: the older ones go.
     namespace fs = std::filesystem;
     std::error_code          error;
@@ -243,5 +407,24 @@ namespace signorini
       }
     for (const auto &name : older)
       fs::remove(name, error);
+  }
+
+  void
+  Checkpoint::remove_incomplete() const
+  {
+    namespace fs = std::filesystem;
+    std::error_code        error;
+    std::set<unsigned int> cycles;
+    for (const auto &entry : fs::directory_iterator(directory, error))
+      {
+        const auto member =
+          output_series::classify(entry.path().filename().string());
+        if (member.checkpoint)
+          cycles.insert(*member.cycle);
+      }
+    for (const unsigned int cycle : cycles)
+      if (!fs::exists(state_file(cycle), error))
+        for (const auto &name : mesh_pieces(cycle))
+          fs::remove(directory + "/" + name, error);
   }
 } // namespace signorini

@@ -67,6 +67,14 @@ namespace signorini
     statistics.push_back(row);
   }
 
+  std::optional<unsigned int>
+  RunRecord::last_cycle() const
+  {
+    if (statistics.empty())
+      return {};
+    return static_cast<unsigned int>(statistics.back().value("cycle"));
+  }
+
   void
   RunRecord::add_timings(const CycleTimings &row)
   {

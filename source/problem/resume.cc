@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <signorini/input/input_error.h>
-#include <signorini/output/file_output.h>
+#include <signorini/output/atomic_file.h>
 #include <signorini/output/output_series.h>
 #include <signorini/problem/contact_problem.h>
 
@@ -11,6 +11,7 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -52,11 +53,15 @@ namespace signorini
   ContactProblem<dim>::start_output(const bool resume)
   {
     const std::string &directory = parameters.output.directory;
-    checkpoint                   = std::make_unique<Checkpoint>(directory,
+    // The run owns the directory (and tidy_output() may remove what it
+    // left unfinished) once the checkpoint to resume from is found: a
+    // refused resume leaves the directory as it was.
+    auto found = std::make_unique<Checkpoint>(directory,
                                               parameters.text,
                                               mpi_communicator);
     const std::optional<unsigned int> resumed =
-      resume ? checkpoint->find_latest() : std::nullopt;
+      resume ? found->find_latest() : std::nullopt;
+    checkpoint = std::move(found);
     if (resume && !resumed)
       pcout << "No checkpoint in " << directory << ": starting at cycle 0"
             << std::endl;
@@ -79,11 +84,17 @@ namespace signorini
   {
     const std::string &directory = parameters.output.directory;
     State              state;
-    {
-      std::istringstream              in(checkpoint->state());
-      boost::archive::binary_iarchive archive(in);
-      archive >> state;
-    }
+    try
+      {
+        std::istringstream              in(checkpoint->state());
+        boost::archive::binary_iarchive archive(in);
+        archive >> state;
+      }
+    catch (const std::exception &error)
+      {
+        throw InputError::at(checkpoint->state_file(cycle),
+                             std::string("cannot be read: ") + error.what());
+      }
     record = state.record;
     run_time += state.run_time;
     write_collectively(mpi_communicator, [&]() {
@@ -107,9 +118,17 @@ namespace signorini
     const auto        &owned_dofs = discretisation.locally_owned_dofs();
     VectorType         owned_solution, owned_pressure;
     if (discretisation.saves_mesh())
-      discretisation.load(checkpoint->mesh_file(cycle),
-                          {&owned_solution, &owned_pressure},
-                          estimated_error_per_cell);
+      try
+        {
+          discretisation.load(checkpoint->mesh_file(cycle),
+                              {&owned_solution, &owned_pressure},
+                              estimated_error_per_cell);
+        }
+      catch (const ExceptionBase &error)
+        {
+          throw InputError::at(checkpoint->mesh_file(cycle),
+                               "cannot be loaded: " + one_line(error));
+        }
     else
       {
         // Cycle k's mesh is the initial one refined k times, with the same
@@ -136,24 +155,55 @@ namespace signorini
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::save_checkpoint(const unsigned int cycle,
-                                       const double       run_time)
+  bool
+  ContactProblem<dim>::writes_checkpoints() const
   {
     // A mesh remeshed from a .geo is not the initial one refined: it
     // would have to be stored whole. Such runs write no checkpoint (and a
     // resume starts at cycle 0, saying so).
-    if (!parameters.checkpoint.enabled ||
-        (discretisation.simplex() && parameters.geometry.from_geometry_file()))
+    return parameters.checkpoint.enabled &&
+           !(discretisation.simplex() &&
+             parameters.geometry.from_geometry_file());
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::save_checkpoint(const unsigned int cycle,
+                                       const double       run_time)
+  {
+    if (!writes_checkpoints())
       return;
     TimerOutput::Scope t(timer, "Output: checkpoint");
     State              state;
     if (discretisation.saves_mesh())
-      write_collectively(mpi_communicator, [&]() {
-        discretisation.save(checkpoint->mesh_file(cycle),
-                            {&solution, &pressure},
-                            estimated_error_per_cell);
-      });
+      {
+        std::string failure;
+        try
+          {
+            discretisation.save(checkpoint->mesh_file(cycle),
+                                {&solution, &pressure},
+                                estimated_error_per_cell);
+          }
+        catch (const ExceptionBase &error)
+          {
+            failure = one_line(error);
+          }
+        catch (const std::exception &error)
+          {
+            failure = error.what();
+          }
+        // Every process's part of the files is written before process 0
+        // checks them.
+        MPI_Barrier(mpi_communicator);
+        write_collectively(mpi_communicator, [&]() {
+          if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+            checkpoint->check_mesh_pieces(cycle, failure);
+          else if (!failure.empty())
+            throw std::runtime_error("cannot write '" +
+                                     checkpoint->mesh_file(cycle) +
+                                     "': " + failure);
+        });
+      }
     else
       for (const auto i : discretisation.locally_owned_dofs())
         {
@@ -189,6 +239,30 @@ namespace signorini
       checkpoint->write_state(cycle, out.str());
   }
 
+  template <int dim>
+  void
+  ContactProblem<dim>::tidy_output() const
+  {
+    if (!checkpoint || Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    // Temporaries of writes that did not finish, and the pieces of a
+    // checkpoint whose state file was not written.
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const auto     &directory = parameters.output.directory;
+    if (!fs::is_directory(directory, error))
+      return;
+    std::vector<fs::path> partial;
+    for (const auto &entry : fs::directory_iterator(directory, error))
+      if (const auto member =
+            output_series::classify(entry.path().filename().string());
+          member.owned && member.partial)
+        partial.push_back(entry.path());
+    for (const auto &path : partial)
+      fs::remove(path, error);
+    checkpoint->remove_incomplete();
+  }
+
   template std::optional<unsigned int>
   ContactProblem<2>::start_output(bool);
   template std::optional<unsigned int>
@@ -197,8 +271,16 @@ namespace signorini
   ContactProblem<2>::restore_checkpoint(unsigned int, double &);
   template void
   ContactProblem<3>::restore_checkpoint(unsigned int, double &);
+  template bool
+  ContactProblem<2>::writes_checkpoints() const;
+  template bool
+  ContactProblem<3>::writes_checkpoints() const;
   template void
   ContactProblem<2>::save_checkpoint(unsigned int, double);
   template void
   ContactProblem<3>::save_checkpoint(unsigned int, double);
+  template void
+  ContactProblem<2>::tidy_output() const;
+  template void
+  ContactProblem<3>::tidy_output() const;
 } // namespace signorini

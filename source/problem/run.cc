@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include <signorini/base/interruption.h>
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
 #include <signorini/elasticity/axisymmetry.h>
@@ -25,9 +26,25 @@ namespace signorini
       }
     catch (...)
       {
-        // A failed run reports one line, not a timer summary, and keeps the
-        // files of its finished cycles.
+        // A failed or interrupted run reports one line, not a timer
+        // summary, and keeps the files of its finished cycles: the writes
+        // queued finish, what is unfinished is removed.
         timer.disable_output();
+        std::exception_ptr failure     = std::current_exception();
+        const auto         interrupted = [&failure]() {
+          try
+            {
+              std::rethrow_exception(failure);
+            }
+          catch (const Interrupted &)
+            {
+              return true;
+            }
+          catch (...)
+            {
+              return false;
+            }
+        };
         try
           {
             background_writer.launch();
@@ -35,8 +52,21 @@ namespace signorini
           }
         catch (...)
           {
+            // A write that failed matters more than the interruption.
+            if (interrupted())
+              failure = std::current_exception();
           }
-        throw;
+        tidy_output();
+        try
+          {
+            std::rethrow_exception(failure);
+          }
+        catch (Interrupted &stop)
+          {
+            stop.finished_cycle = record.last_cycle();
+            stop.resumable      = stop.finished_cycle && writes_checkpoints();
+            throw;
+          }
       }
   }
 
@@ -83,6 +113,9 @@ namespace signorini
          cycle < parameters.refinement.n_cycles;
          ++cycle)
       {
+        // A signal stops the run here, after the last cycle's files, or
+        // between Newton steps (NewtonDriver::iterate).
+        interruption::check(mpi_communicator);
         CycleTimings timings;
         timings.cycle = cycle;
         start         = now();

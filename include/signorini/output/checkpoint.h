@@ -3,9 +3,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <signorini/output/checkpoint_manifest.h>
+
 #include <mpi.h>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace signorini
 {
@@ -26,10 +29,13 @@ namespace signorini
   /**
    * The checkpoint files of a run in its output directory: after cycle CC,
    * checkpoint-CC.mesh* (the distributed mesh with the data attached to its
-   * cells, written by deal.II) and checkpoint-CC.state, written whole and
-   * last, which makes the checkpoint complete. The state holds the
-   * parameter text of the run that wrote it and the caller's state as
-   * bytes. Only the newest complete checkpoint is kept.
+   * cells, written by deal.II and p4est) and checkpoint-CC.state, written
+   * whole and last, which makes the checkpoint complete. The state file is
+   * the checkpoint's manifest (CheckpointManifest): the size and CRC-32 of
+   * every mesh piece, the parameter text of the run that wrote it and the
+   * caller's state, closed by its own checksum. Only the newest complete
+   * checkpoint is kept; an older one is removed once a newer one is
+   * complete.
    */
   class Checkpoint
   {
@@ -48,10 +54,16 @@ namespace signorini
     state_file(const unsigned int cycle) const;
 
     /**
-     * The newest complete checkpoint in the directory, if any, on every
-     * process: its cycle, with its state available from state(). Throws an
-     * InputError naming the state file if it cannot be read or was written
-     * by a different parameter set (naming the first entry that differs).
+     * The newest intact checkpoint in the directory, if any, on every
+     * process: its cycle, with its state available from state(). Every
+     * piece is checked against its size and checksum before anything reads
+     * it. A newer checkpoint without its state file (a run stopped while
+     * writing it) is passed over with a line on standard output; one that is
+     * damaged or truncated with a warning line on standard error naming the
+     * file and what is wrong. If none is intact and one is damaged, throws
+     * an InputError naming the newest fault; also if the intact one was
+     * written by a different parameter set (naming the first entry that
+     * differs).
      */
     std::optional<unsigned int>
     find_latest();
@@ -61,21 +73,52 @@ namespace signorini
     state() const;
 
     /**
+     * Checks, on process 0 alone, that the mesh of cycle @p cycle, which
+     * every process has just saved, was written whole: deal.II and p4est do
+     * not report a write cut short by the file-size limit or a full file
+     * system, so the pieces are checked against both. @p save_failure is
+     * the message of a failure the save reported, if any. On failure the
+     * pieces are removed (the previous checkpoint stays complete) and a
+     * std::runtime_error names the file and the reason.
+     */
+    void
+    check_mesh_pieces(const unsigned int cycle,
+                      const std::string &save_failure) const;
+
+    /**
      * Completes the checkpoint of cycle @p cycle, whose mesh the caller has
-     * saved: process 0 writes the state file whole, then every other
+     * saved: every process reads a slice of each mesh piece for its
+     * checksum, process 0 writes the state file whole, then every other
      * checkpoint is removed. Collective; throws std::runtime_error on every
-     * process if writing fails on one.
+     * process if reading or writing fails on one.
      */
     void
     write_state(const unsigned int cycle, const std::string &state) const;
 
     /** write_state() on process 0 alone, without communication: for one
-     * process, from the background writer. Throws std::runtime_error if
-     * writing fails. */
+     * process, from the background writer. Reads the mesh pieces for their
+     * checksums. Throws std::runtime_error if reading or writing fails. */
     void
     write_state_file(const unsigned int cycle, const std::string &state) const;
 
+    /** Removes, on process 0 alone, the pieces of checkpoints without a
+     * state file (whose writing failed or was stopped): what is left is
+     * the newest complete checkpoint. */
+    void
+    remove_incomplete() const;
+
   private:
+    /** The names of the mesh pieces of cycle @p cycle in the directory. */
+    std::vector<std::string>
+    mesh_pieces(const unsigned int cycle) const;
+
+    /** Writes the state file of cycle @p cycle with the checksums of its
+     * @p pieces, then removes every other checkpoint. */
+    void
+    write_manifest(const unsigned int                            cycle,
+                   const std::string                            &state,
+                   const std::vector<CheckpointManifest::Piece> &pieces) const;
+
     const std::string directory;
     const std::string parameter_text;
     MPI_Comm          mpi_communicator;

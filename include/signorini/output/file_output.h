@@ -1,34 +1,16 @@
 #ifndef signorini_output_file_output_h
 #define signorini_output_file_output_h
 
+// The VTU files are written with write_atomically().
+#include <signorini/output/atomic_file.h>
+
 #include <cstdint>
-#include <functional>
-#include <mpi.h>
 #include <ostream>
 #include <string>
 #include <vector>
 
 namespace signorini
 {
-  /**
-   * Writes @p path whole or not at all: @p write fills a temporary file
-   * beside it, which is renamed to @p path once complete. A reader never
-   * sees a half-written file, and an earlier version stays intact if
-   * writing fails. Throws std::runtime_error naming the file on failure.
-   */
-  void
-  write_atomically(const std::string                         &path,
-                   const std::function<void(std::ostream &)> &write);
-
-  /**
-   * Runs @p write on every process and throws on every process if it
-   * failed on any, so that no process is left waiting for one that gave up.
-   * Also a barrier: what one process wrote is complete afterwards.
-   */
-  void
-  write_collectively(const MPI_Comm               mpi_communicator,
-                     const std::function<void()> &write);
-
   /**
    * One piece of a VTU file of linear cells, laid out as deal.II's DataOut
    * lays out its patches: every cell has points of its own (one per vertex),

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,6 +81,10 @@ namespace signorini
   public:
     void
     add_statistics(const StatisticsRow &row);
+
+    /** The cycle of the last statistics row, if any. */
+    std::optional<unsigned int>
+    last_cycle() const;
 
     void
     add_timings(const CycleTimings &row);

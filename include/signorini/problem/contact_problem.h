@@ -90,9 +90,20 @@ namespace signorini
      * @p run_time. */
     void
     restore_checkpoint(const unsigned int cycle, double &run_time);
-    /** Writes the checkpoint of cycle @p cycle (Output/Checkpoint). */
+    /** Whether this run writes checkpoints (Output/Checkpoint, and a mesh
+     * that is not remeshed by Gmsh). */
+    bool
+    writes_checkpoints() const;
+    /** Writes the checkpoint of cycle @p cycle (Output/Checkpoint); throws
+     * std::runtime_error naming the file and the reason if a piece is not
+     * written whole. */
     void
     save_checkpoint(const unsigned int cycle, const double run_time);
+    /** After a failure or an interruption, once nothing is written any
+     * more: removes the temporaries of unfinished writes and the pieces of
+     * an incomplete checkpoint (process 0). */
+    void
+    tidy_output() const;
 
     // benchmark.cc
     /** Wall time of assembling and solving the Newton system of the

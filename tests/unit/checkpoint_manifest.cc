@@ -1,0 +1,140 @@
+// CheckpointManifest, the text of a checkpoint's state file: read back as
+// written; every truncation and every single-bit change of the text
+// refused (CRC-32 detects every error of one bit); a state file of the
+// format before checksums named as such. checksum_of_file against the
+// CRC-32 check value of "123456789" (0xcbf43926); the checksums of slices
+// of a file joined equal the whole file's. verify_pieces on pieces intact,
+// shorter, longer, changed and missing.
+
+#include <signorini/output/checkpoint_manifest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+
+using namespace signorini;
+namespace fs = std::filesystem;
+
+namespace
+{
+  void
+  write_file(const std::string &path, const std::string &bytes)
+  {
+    std::ofstream(path, std::ios::binary) << bytes;
+  }
+
+  /** The first words of a fault, up to its parenthesis. */
+  std::string
+  kind(const std::string &fault)
+  {
+    return fault.substr(0, fault.find(" ("));
+  }
+} // namespace
+
+int
+main()
+{
+  const std::string directory = "pieces";
+  fs::remove_all(directory);
+  fs::create_directory(directory);
+
+  write_file(directory + "/check.txt", "123456789");
+  const auto check = checksum_of_file(directory + "/check.txt");
+  std::printf("checksum_of_file(\"123456789\"): size %llu, crc32 %08x "
+              "(check value cbf43926): %s\n",
+              static_cast<unsigned long long>(check.size),
+              check.crc,
+              check.crc == 0xcbf43926u && check.size == 9 ? "PASS" : "FAIL");
+
+  std::string mesh(5000, ' ');
+  for (unsigned int i = 0; i < mesh.size(); ++i)
+    mesh[i] = static_cast<char>((31 * i + i / 7) % 256);
+  const std::string info = "version 4\n";
+  write_file(directory + "/checkpoint-03.mesh", mesh);
+  write_file(directory + "/checkpoint-03.mesh.info", info);
+
+  // The checksums of slices, as the processes of a parallel run compute
+  // them, joined: that of the whole file, for any number of slices.
+  for (const unsigned int n : {1u, 2u, 3u, 7u, 6000u})
+    {
+      FileChecksum joined;
+      for (unsigned int i = 0; i < n; ++i)
+        joined = concatenate(joined,
+                             checksum_of_file(directory + "/checkpoint-03.mesh",
+                                              5000ull * i / n,
+                                              5000ull * (i + 1) / n -
+                                                5000ull * i / n));
+      const auto whole = checksum_of_file(directory + "/checkpoint-03.mesh");
+      std::printf("%u slices joined: size %llu, crc32 %08x, whole %08x: %s\n",
+                  n,
+                  static_cast<unsigned long long>(joined.size),
+                  joined.crc,
+                  whole.crc,
+                  joined.crc == whole.crc && joined.size == 5000 ? "PASS" :
+                                                                   "FAIL");
+    }
+
+  CheckpointManifest written;
+  written.cycle      = 3;
+  written.parameters = "set Dimension = 2\nsubsection Output\nend\n";
+  written.state      = std::string("binary\0state\n\xff", 14);
+  for (const std::string name :
+       {"checkpoint-03.mesh", "checkpoint-03.mesh.info"})
+    written.pieces.push_back({name, checksum_of_file(directory + "/" + name)});
+  const std::string text = written.text();
+
+  CheckpointManifest read;
+  const std::string  fault = read.read(text);
+  const bool         same =
+    fault.empty() && read.cycle == 3 && read.parameters == written.parameters &&
+    read.state == written.state && read.pieces.size() == 2 &&
+    read.pieces[0].name == "checkpoint-03.mesh" &&
+    read.pieces[0].checksum.size == 5000 &&
+    read.pieces[1].checksum.crc == written.pieces[1].checksum.crc;
+  std::cout << "read back (" << text.size()
+            << " bytes): " << (same ? "PASS" : "FAIL " + fault) << '\n';
+
+  std::map<std::string, unsigned int> truncations;
+  for (std::size_t size = 0; size < text.size(); ++size)
+    truncations[kind(CheckpointManifest().read(text.substr(0, size)))] += 1;
+  std::cout << "every truncation refused (" << text.size() << "):\n";
+  for (const auto &[what, count] : truncations)
+    std::cout << "  " << (what.empty() ? "ACCEPTED" : what) << ": " << count
+              << '\n';
+
+  std::map<std::string, unsigned int> flips;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    for (unsigned int bit = 0; bit < 8; ++bit)
+      {
+        std::string changed = text;
+        changed[i] ^= static_cast<char>(1u << bit);
+        flips[kind(CheckpointManifest().read(changed))] += 1;
+      }
+  std::cout << "every one-bit change refused (" << 8 * text.size() << "):\n";
+  for (const auto &[what, count] : flips)
+    std::cout << "  " << (what.empty() ? "ACCEPTED" : what) << ": " << count
+              << '\n';
+
+  std::cout << "format 1: "
+            << CheckpointManifest().read("signorini checkpoint 1\ncycle 3\n")
+            << '\n';
+  std::cout << "other text: " << CheckpointManifest().read("hello\n") << '\n';
+
+  std::cout << "verify_pieces:\n";
+  std::cout << "  intact: \"" << read.verify_pieces(directory) << "\"\n";
+  write_file(directory + "/checkpoint-03.mesh", mesh.substr(0, 4000));
+  std::cout << "  shorter: " << read.verify_pieces(directory) << '\n';
+  write_file(directory + "/checkpoint-03.mesh", mesh + "m");
+  std::cout << "  longer: " << read.verify_pieces(directory) << '\n';
+  std::string changed = mesh;
+  changed[2500] ^= 1;
+  write_file(directory + "/checkpoint-03.mesh", changed);
+  std::cout << "  changed: " << read.verify_pieces(directory) << '\n';
+  write_file(directory + "/checkpoint-03.mesh", mesh);
+  fs::remove(directory + "/checkpoint-03.mesh.info");
+  std::cout << "  missing: " << read.verify_pieces(directory) << '\n';
+  fs::remove_all(directory);
+}
