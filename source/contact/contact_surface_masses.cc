@@ -19,19 +19,17 @@ namespace signorini
     // obstacles, a node's over the part of the boundary that faces its
     // obstacle (the quadrature points whose normal faces it most
     // squarely).
-    const auto                 &fe = discretisation.fe();
-    const unsigned int          n  = fe.n_dofs_per_cell();
-    std::vector<VectorType>     mass(n_obstacles,
+    const auto             &fe = discretisation.fe();
+    const unsigned int      n  = fe.n_dofs_per_cell();
+    std::vector<VectorType> mass(n_obstacles,
                                  VectorType(owned_dofs, mpi_communicator));
-    FEFaceValues<dim>           fe_face_values(discretisation.mapping(),
-                                     fe,
-                                     discretisation.face_quadrature(),
-                                     update_values | update_JxW_values |
-                                       discretisation.weight_flags() |
-                                       (n_obstacles > 1 ?
-                                                    update_quadrature_points |
-                                            update_normal_vectors :
-                                                    update_default));
+    FEFaceValues<dim>       fe_face_values(
+      discretisation.mapping(),
+      fe,
+      discretisation.face_quadrature(),
+      update_values | update_JxW_values | discretisation.weight_flags() |
+        (n_obstacles > 1 ? update_quadrature_points | update_normal_vectors :
+                                 update_default));
     std::vector<Vector<double>> cell_mass(n_obstacles, Vector<double>(n));
     std::vector<types::global_dof_index> dof_indices(n);
     for (const auto &cell :

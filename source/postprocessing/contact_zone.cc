@@ -205,7 +205,7 @@ namespace signorini
               for (const unsigned int q :
                    fe_face_values.quadrature_point_indices())
                 {
-                  const auto  &x   = fe_face_values.quadrature_point(q);
+                  const auto  &x = fe_face_values.quadrature_point(q);
                   const double JxW =
                     fe_face_values.JxW(q) * discretisation.weight(x);
                   // The point belongs to the obstacle it faces.

@@ -83,9 +83,9 @@ namespace signorini
     // is the support's reaction and the obstacle's force together: the
     // obstacle's share is its own.
     auto zone = evaluate_contact_zone(discretisation,
-                                            contact_surface,
-                                            pressure,
-                                            parameters.reference);
+                                      contact_surface,
+                                      pressure,
+                                      parameters.reference);
     if (zone.supported)
       contact_force += zone.supported_force;
     // The radial forces of a whole revolution cancel: its resultants are

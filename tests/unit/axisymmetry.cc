@@ -26,7 +26,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <signorini/contact/contact_surface.h>
-#include <signorini/contact/obstacle.h>
+#include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/cell_stiffness.h>
@@ -372,7 +372,7 @@ namespace
     report("|weight - pi|",
            std::abs(discretisation.weight(Point<2>(0.5, 0.3)) - pi),
            0.);
-    const auto        obstacle = create_obstacle(cylinder.parameters.obstacle);
+    const auto        obstacle = create_obstacles(cylinder.parameters.obstacle);
     ContactSurface<2> surface(cylinder.parameters.obstacle.contact_ids,
                               *obstacle);
     surface.setup(discretisation);

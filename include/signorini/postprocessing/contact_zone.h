@@ -66,9 +66,9 @@ namespace signorini
    * of the active nodes, and the integral of the pressure field that
    * interpolates the nodal values of each obstacle (a hanging node takes
    * the pressure its masters give it, a supported one none), with a Gauss
-   * rule of high order, since a closed-form pressure has a square-root edge. Integrals are weighted by
-   * Discretisation::weight (over the whole revolution of an axisymmetric
-   * model).
+   * rule of high order, since a closed-form pressure has a square-root edge.
+   * Integrals are weighted by Discretisation::weight (over the whole revolution
+   * of an axisymmetric model).
    */
   template <int dim>
   ContactZone<dim>
