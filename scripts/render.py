@@ -77,6 +77,34 @@ def revolve(source, capping):
     return swept
 
 
+def stress_colours(body, view, pairs):
+    """Colours body by the von Mises stress, with the scale ending where only
+    1 % of the measure is more stressed; pairs: (stress, measure) per cell,
+    sorted."""
+    simple.ColorBy(body, ("POINTS", "von_mises"))
+    lut = simple.GetColorTransferFunction("von_mises")
+    lut.ApplyPreset("Viridis (matplotlib)", True)
+    total, running, top = sum(m for _, m in pairs), 0., pairs[-1][0]
+    for value, measure in pairs:
+        running += measure
+        if running >= 0.99 * total:
+            top = value
+            break
+    lut.RescaleTransferFunction(pairs[0][0], top)
+    lut.AutomaticRescaleRangeMode = "Never"
+    bar = simple.GetScalarBar(lut, view)
+    bar.Title = "von Mises stress [MPa]"
+    bar.ComponentTitle = ""
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    bar.TitleFontSize = bar.LabelFontSize = 14
+    bar.RangeLabelFormat = "%.3g"
+    bar.WindowLocation = "Any Location"
+    bar.Orientation = "Horizontal"
+    bar.Position = [0.55, 0.04]
+    bar.ScalarBarLength = 0.4
+    body.SetScalarBarVisibility(view, True)
+
+
 def render_revolved(reader, n_cycles, time):
     """The axisymmetric scene's body and obstacle revolved, seen from below
     the contact plane into the missing quarter."""
@@ -133,9 +161,6 @@ def render_revolved(reader, n_cycles, time):
         pass
     view.OrientationAxesVisibility = 0
     body = simple.Show(body_3d, view)
-    simple.ColorBy(body, ("POINTS", "von_mises"))
-    lut = simple.GetColorTransferFunction("von_mises")
-    lut.ApplyPreset("Viridis (matplotlib)", True)
     # The colour range ends where 1 % of the revolved body's volume (of the
     # part shown), cell areas times 2 pi r, is more stressed.
     shown = reader if window >= size else near(reader)
@@ -153,25 +178,7 @@ def render_revolved(reader, n_cycles, time):
     pairs = sorted((stress.GetValue(i),
                     area.GetValue(i) * abs(centre_data.GetPoint(i)[0]))
                    for i in range(stress.GetNumberOfTuples()))
-    total, running, top = sum(v for _, v in pairs), 0., pairs[-1][0]
-    for value, volume in pairs:
-        running += volume
-        if running >= 0.99 * total:
-            top = value
-            break
-    lut.RescaleTransferFunction(pairs[0][0], top)
-    lut.AutomaticRescaleRangeMode = "Never"
-    bar = simple.GetScalarBar(lut, view)
-    bar.Title = "von Mises stress [MPa]"
-    bar.ComponentTitle = ""
-    bar.TitleColor = bar.LabelColor = [0, 0, 0]
-    bar.TitleFontSize = bar.LabelFontSize = 14
-    bar.RangeLabelFormat = "%.3g"
-    bar.WindowLocation = "Any Location"
-    bar.Orientation = "Horizontal"
-    bar.Position = [0.55, 0.04]
-    bar.ScalarBarLength = 0.4
-    body.SetScalarBarVisibility(view, True)
+    stress_colours(body, view, pairs)
     ground = simple.Show(ground_3d, view)
     if window < size:
         ground.AmbientColor = ground.DiffuseColor = [0.75, 0.75, 0.75]
@@ -263,9 +270,6 @@ def render_plain(reader, n_cycles, times):
 
     body = simple.Show(warp, view)
     body.Scale = scale
-    simple.ColorBy(body, ("POINTS", "von_mises"))
-    lut = simple.GetColorTransferFunction("von_mises")
-    lut.ApplyPreset("Viridis (matplotlib)", True)
     # Stress concentrations at corners and contact edges would take the whole
     # colour range: it ends where only 1 % of the body's area (volume) is more
     # stressed.
@@ -278,26 +282,7 @@ def render_plain(reader, n_cycles, times):
     size = cell_data.GetCellData().GetArray("Volume" if dim == 3 else "Area")
     pairs = sorted((stress.GetValue(i), size.GetValue(i))
                    for i in range(stress.GetNumberOfTuples()))
-    total, running, top = sum(a for _, a in pairs), 0., pairs[-1][0]
-    for value, area in pairs:
-        running += area
-        if running >= 0.99 * total:
-            top = value
-            break
-    values = [pairs[0][0], pairs[-1][0]]
-    lut.RescaleTransferFunction(values[0], top)
-    lut.AutomaticRescaleRangeMode = "Never"
-    bar = simple.GetScalarBar(lut, view)
-    bar.Title = "von Mises stress [MPa]"
-    bar.ComponentTitle = ""
-    bar.TitleColor = bar.LabelColor = [0, 0, 0]
-    bar.TitleFontSize = bar.LabelFontSize = 14
-    bar.RangeLabelFormat = "%.3g"
-    bar.WindowLocation = "Any Location"
-    bar.Orientation = "Horizontal"
-    bar.Position = [0.55, 0.04]
-    bar.ScalarBarLength = 0.4
-    body.SetScalarBarVisibility(view, True)
+    stress_colours(body, view, pairs)
 
     ground = simple.Show(obstacle, view)
     ground.Scale = scale
@@ -311,7 +296,7 @@ def render_plain(reader, n_cycles, times):
     caption = "%s: cycle %d, %d cells; displacement to scale" % (
         title, n_cycles - 1, n_cells)
     caption_2 = ("colour scale ends where 1 %% of the body is more stressed "
-                 "(max %.3g MPa)" % values[-1])
+                 "(max %.3g MPa)" % pairs[-1][0])
     if exaggeration > 1:
         caption += ", vertical scale x%d" % exaggeration
     text = simple.Text(Text=caption + "\n" + caption_2)
