@@ -106,8 +106,8 @@ def stress_colours(body, view, pairs):
 
 
 def render_revolved(reader, n_cycles, time):
-    """The axisymmetric scene's body and obstacle revolved, seen from below
-    the contact plane into the missing quarter."""
+    """The axisymmetric scene's body and obstacle revolved, seen from the
+    obstacle's side of the contact plane into the missing quarter."""
     data = simple.servermanager.Fetch(reader)
     if data.IsA("vtkMultiBlockDataSet"):
         data = data.GetBlock(0)
@@ -115,15 +115,23 @@ def render_revolved(reader, n_cycles, time):
     n_cells = data.GetNumberOfCells()
     # A half-space (a body over 40 times its contact radius) is shown near
     # its contact zone: within four contact radii of the axis and the
-    # contact plane.
+    # contact plane, at the body's bottom or top, where its active nodes
+    # are (an obstacle below it or a punch from above).
     radius = last_row(directory).get("contact_width", 0.)
     size = max(bounds[1] - bounds[0], bounds[3] - bounds[2])
     window = size
     if radius > 0 and size > 40 * radius:
         window = 4 * radius
+    active = data.GetPointData().GetArray("active_set")
+    heights = [data.GetPoint(i)[1] for i in range(data.GetNumberOfPoints())
+               if active is not None and active.GetValue(i) > 0.5]
+    from_above = bool(heights) and (
+        sum(heights) / len(heights) > (bounds[2] + bounds[3]) / 2)
+    side = -1 if from_above else 1
+    contact_plane = bounds[3] if from_above else bounds[2]
     near = lambda source: keep_side(
         keep_side(source, [window, 0, 0], [-1, 0, 0]),
-        [0, bounds[2] + window, 0], [0, -1, 0])
+        [0, contact_plane + side * window, 0], [0, -side, 0])
 
     section = simple.WarpByVector(Input=reader,
                                   Vectors=["POINTS", "displacement"],
@@ -134,7 +142,7 @@ def render_revolved(reader, n_cycles, time):
     if window < size:
         # obstacle.vtu samples the obstacle over the whole body, too coarsely
         # for the window: the obstacle is drawn where the body touches it,
-        # the active part of the deformed boundary, a little below.
+        # the active part of the deformed boundary, a little outside.
         edges = simple.FeatureEdges(Input=simple.ExtractSurface(
             Input=simple.CleantoGrid(Input=section)))
         edges.BoundaryEdges = 1
@@ -144,7 +152,7 @@ def render_revolved(reader, n_cycles, time):
         touching.LowerThreshold, touching.UpperThreshold = 0.5, 1.5
         touching.AllScalars = 1
         obstacle = simple.Transform(Input=touching)
-        obstacle.Transform.Translate = [0, -0.01 * window, 0]
+        obstacle.Transform.Translate = [0, -side * 0.01 * window, 0]
     else:
         obstacle = simple.XMLUnstructuredGridReader(
             FileName=[directory + "/obstacle.vtu"])
@@ -199,8 +207,9 @@ def render_revolved(reader, n_cycles, time):
     label.WindowLocation = "Upper Left Corner"
     label.Justification = "Left"
 
-    # From below the contact plane, into the missing quarter (between 270
-    # and 360 degrees), through the half-transparent obstacle.
+    # From the obstacle's side of the contact plane, into the missing
+    # quarter (between 270 and 360 degrees), through the half-transparent
+    # obstacle.
     simple.Render(view)
     body_3d.UpdatePipeline(time)
     box = simple.servermanager.Fetch(body_3d).GetBounds()
@@ -209,7 +218,7 @@ def render_revolved(reader, n_cycles, time):
                            for i in range(3)))
     view.CameraFocalPoint = centre
     view.CameraPosition = [centre[0] + 1.2 * extent, centre[1] - 1.2 * extent,
-                           centre[2] - 0.8 * extent]
+                           centre[2] - side * 0.8 * extent]
     view.CameraViewUp = [0, 0, 1]
     view.ResetCamera(*box)
     view.GetActiveCamera().Dolly(1.5)

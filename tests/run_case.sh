@@ -9,7 +9,8 @@
 #          is on the observed rate, the least-squares slope of log COLUMN
 #          against log dofs over all cycles (from cycle K on)
 #   OP:    near (|x-VALUE| <= TOLERANCE), rnear (relative), lt, le, gt, ge;
-#          or `decreasing` (no VALUE): every row below the one before
+#          or `decreasing` / `increasing` (no VALUE): every row below /
+#          above the one before
 # Checks print PASS or FAIL, so numdiff turns a violated bound into a failing test
 # even where the bound is far tighter than numdiff's own tolerance.
 program=$1
@@ -72,10 +73,12 @@ awk -F, -v checks="$checks" '
           else verdict = sprintf("PASS (%.2f)", slope)
         }
       }
-      else if (op == "decreasing") {
-        for (r = 2; r <= rows && verdict == "PASS"; ++r)
-          if (!(value[r, col[name]] + 0 < value[r - 1, col[name]] + 0))
+      else if (op == "decreasing" || op == "increasing") {
+        for (r = 2; r <= rows && verdict == "PASS"; ++r) {
+          step = value[r, col[name]] - value[r - 1, col[name]]
+          if (!(op == "decreasing" ? step < 0 : step > 0))
             verdict = "FAIL (cycle " (r - 1) ": " value[r, col[name]] ")"
+        }
       }
       else {
         first = (row == "all") ? 1 : (row == "last" ? rows : row + 1)

@@ -4,6 +4,7 @@
 #include <signorini/contact/height_obstacle.h>
 #include <signorini/contact/obstacle.h>
 #include <signorini/contact/plane_obstacle.h>
+#include <signorini/contact/punch_obstacle.h>
 #include <signorini/contact/sphere_obstacle.h>
 #include <signorini/output/file_output.h>
 
@@ -86,6 +87,11 @@ namespace signorini
         case Type::cylinder:
           return std::make_unique<CylinderObstacle<dim>>(
             d.center, d.axis, d.radius, d.body_inside, d.entry("Center"));
+        case Type::punch:
+          return std::make_unique<PunchObstacle<dim>>(d.center,
+                                                      d.normal,
+                                                      d.radius,
+                                                      d.entry("Center"));
         case Type::signed_distance:
           return std::make_unique<DistanceObstacle<dim>>(
             *d.distance, d.entry("Signed distance"));

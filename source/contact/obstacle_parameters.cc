@@ -24,6 +24,7 @@ namespace signorini
       {ObstacleType<dim>::plane, "plane"},
       {ObstacleType<dim>::sphere, "sphere"},
       {ObstacleType<dim>::cylinder, "cylinder"},
+      {ObstacleType<dim>::punch, "punch"},
       {ObstacleType<dim>::signed_distance, "signed distance"},
       {ObstacleType<dim>::geometry_file, "geometry file"}};
 
@@ -92,12 +93,15 @@ namespace signorini
                         "plane: the outward normal, pointing from the "
                         "obstacle towards the body (any length but zero), "
                         "e.g. '0, 1' for a floor, '0, -1' for a plate "
-                        "pressing from above.");
+                        "pressing from above; punch: the outward normal of "
+                        "its flat end, '0, -1' for a punch from above in "
+                        "2D.");
       prm.declare_entry("Center",
                         defaults["Center"],
                         Patterns::Anything(),
-                        "sphere: its center; cylinder: a point of its axis "
-                        "[mm].");
+                        "sphere: its center; cylinder: a point of its axis; "
+                        "punch: the center of its flat end (on the axis "
+                        "r = 0 in an axisymmetric model) [mm].");
       prm.declare_entry("Axis",
                         defaults["Axis"],
                         Patterns::Anything(),
@@ -107,7 +111,9 @@ namespace signorini
       prm.declare_entry("Radius",
                         defaults["Radius"],
                         Patterns::Anything(),
-                        "sphere, cylinder: radius [mm].");
+                        "sphere, cylinder: radius [mm]; punch: the radius "
+                        "of its flat end (in plane 2D the half-width of a "
+                        "strip) [mm].");
       prm.declare_entry("Body",
                         defaults["Body"],
                         body_sides.pattern(),
@@ -203,6 +209,9 @@ namespace signorini
             if (dim == 3)
               required.insert("Axis");
             optional.insert("Body");
+            break;
+          case Type::punch:
+            required = {"Center", "Normal", "Radius"};
             break;
           case Type::signed_distance:
             required = {"Signed distance"};
@@ -318,6 +327,7 @@ namespace signorini
           return entry("Point");
         case Type::sphere:
         case Type::cylinder:
+        case Type::punch:
           return entry("Center");
         case Type::signed_distance:
           return entry("Signed distance");

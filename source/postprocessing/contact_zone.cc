@@ -47,6 +47,7 @@ namespace signorini
     const auto        &nodes       = surface.nodes();
     ContactZone<dim>   zone;
     zone.obstacles.resize(n_obstacles);
+    zone.revolved = discretisation.axisymmetric();
 
     // Peak pressure, nodal forces and the mean normal of the active nodes.
     const double                none = -std::numeric_limits<double>::max();
@@ -85,7 +86,11 @@ namespace signorini
         peak[k]              = Utilities::MPI::max(peak[k], comm);
         contact.max_pressure = peak[k] == none ? 0. : peak[k];
         contact.force        = Utilities::MPI::sum(contact.force, comm);
-        mean_normal[k]       = Utilities::MPI::sum(mean_normal[k], comm);
+        // The radial forces of a whole revolution cancel: its resultant is
+        // axial.
+        if (discretisation.axisymmetric())
+          contact.force[0] = 0.;
+        mean_normal[k] = Utilities::MPI::sum(mean_normal[k], comm);
         if (Utilities::MPI::sum(n_active[k], comm) == 0)
           continue;
         const double         length  = mean_normal[k].norm();
@@ -265,7 +270,8 @@ namespace signorini
       return;
     row.add("contact_area", zone.contact_area);
     const char *axes = "xyz";
-    const char *area = dim == 2 ? "contact length " : "contact area ";
+    const char *area =
+      dim == 2 && !zone.revolved ? "contact length " : "contact area ";
     out << "   " << area << zone.contact_area << std::endl;
     if (obstacles.size() > 1)
       for (unsigned int k = 0; k < obstacles.size(); ++k)

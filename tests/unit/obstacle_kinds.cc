@@ -1,6 +1,7 @@
 // The obstacle kinds beside the height: gap and outward normal of points
 // outside, on and inside a plane, a sphere and a cylinder (body outside and
-// inside), a signed-distance expression (a level set that is not a
+// inside), a flat-ended punch (under its end, at and beyond its rim, beside
+// it), a signed-distance expression (a level set that is not a
 // distance) and the solid of a geometry file (an OpenCASCADE disk and ball
 // from .geo files Gmsh exports), each against its closed form; an
 // ObstacleSet of two moved planes: the nearest obstacle, the one a boundary
@@ -15,6 +16,7 @@
 #include <signorini/contact/distance_obstacle.h>
 #include <signorini/contact/obstacle_set.h>
 #include <signorini/contact/plane_obstacle.h>
+#include <signorini/contact/punch_obstacle.h>
 #include <signorini/contact/sphere_obstacle.h>
 
 #include <cmath>
@@ -98,6 +100,20 @@ namespace
     check<2>(bore, Point<2>(1, -2), 1., Tensor<1, 2>({-1., 0.}));
     check<2>(bore, Point<2>(-1.2, -0.4), 0., Tensor<1, 2>({0.6, -0.8}));
 
+    std::cout << "punch of radius 1 from above, its end at (2, 1) facing "
+                 "down:\n";
+    const PunchObstacle<2> strip(Point<2>(2, 1),
+                                 Tensor<1, 2>({0., -2.}),
+                                 1.,
+                                 "F");
+    const Tensor<1, 2>     down({0., -1.});
+    check<2>(strip, Point<2>(2.5, 0.75), 0.25, down);
+    check<2>(strip, Point<2>(3, 1), 0., down);
+    check<2>(strip, Point<2>(1.5, 1.1), -0.1, down);
+    check<2>(strip, Point<2>(6, -3), 5., Tensor<1, 2>({0.6, -0.8}));
+    check<2>(strip, Point<2>(-0.5, 1), 1.5, Tensor<1, 2>({-1., 0.}));
+    check<2>(strip, Point<2>(3.5, 3), 0.5, Tensor<1, 2>({1., 0.}));
+
     std::cout << "signed distance 2 (y - x^2) (a parabola, not a "
                  "distance):\n";
     FunctionParser<2> parabola(1);
@@ -132,6 +148,16 @@ namespace
     const SphereObstacle<3> cup(Point<3>(1, 1, 1), 1., true, "S");
     check<3>(cup, Point<3>(1, 1, 0.5), 0.5, Tensor<1, 3>({0., 0., 1.}));
     check<3>(cup, Point<3>(1, 3, 1), -1., Tensor<1, 3>({0., -1., 0.}));
+
+    std::cout << "punch of radius 2, its end at the origin facing along "
+                 "(1, 0, 0):\n";
+    const PunchObstacle<3> punch(Point<3>(),
+                                 Tensor<1, 3>({1., 0., 0.}),
+                                 2.,
+                                 "F");
+    check<3>(punch, Point<3>(0.5, 1, 1), 0.5, Tensor<1, 3>({1., 0., 0.}));
+    check<3>(punch, Point<3>(3, 0, 6), 5., Tensor<1, 3>({0.6, 0., 0.8}));
+    check<3>(punch, Point<3>(-1, 0, -3), 1., Tensor<1, 3>({0., 0., -1.}));
 
     std::cout << "cylinder of radius 1 around the axis (1, 1, 0) through "
                  "the origin, body outside:\n";

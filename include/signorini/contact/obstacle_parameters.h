@@ -32,6 +32,7 @@ namespace signorini
       plane,
       sphere,
       cylinder,
+      punch,
       signed_distance,
       geometry_file
     };
@@ -45,11 +46,12 @@ namespace signorini
     /** height: psi [mm] of x (2D) or x, y (3D). */
     std::string                                      height_expression = "0";
     std::unique_ptr<dealii::FunctionParser<dim - 1>> height;
-    /** plane: a point of the plane [mm] and its outward unit normal. */
+    /** plane: a point of the plane [mm] and its outward unit normal;
+     * punch: the outward unit normal of its flat end. */
     dealii::Point<dim>     point;
     dealii::Tensor<1, dim> normal;
-    /** sphere, cylinder: center [mm], unit axis (cylinder in 3D), radius
-     * [mm]. */
+    /** sphere, cylinder, punch: center (of the flat end for a punch) [mm],
+     * unit axis (cylinder in 3D), radius [mm]. */
     dealii::Point<dim>     center;
     dealii::Tensor<1, dim> axis;
     double                 radius = 0.;

@@ -23,7 +23,8 @@ namespace signorini
      * coordinate axis least aligned with the active nodes' mean normal,
      * made tangent to it (x for a floor, y for a wall x = const). */
     double contact_width = 0.;
-    /** Measure of the contact zone [mm in 2D, mm^2 in 3D]: the integral
+    /** Measure of the contact zone [mm in 2D, mm^2 in 3D and
+     * axisymmetric]: the integral
      * over the contact boundary of the interpolated indicator of the
      * active nodes (faces between active nodes count whole, faces at the
      * zone's edge by the share of their active vertices). */
@@ -41,8 +42,13 @@ namespace signorini
     double max_pressure = 0.;
     /** The largest contact_width of the obstacles [mm]. */
     double contact_width = 0.;
-    /** The sum of the obstacles' contact_area [mm in 2D, mm^2 in 3D]. */
+    /** The sum of the obstacles' contact_area [mm in 2D, mm^2 in 3D and in
+     * an axisymmetric model, where it is the area of revolution]. */
     double contact_area = 0.;
+    /** Whether the measures are of a revolved (axisymmetric) model: the
+     * contact width is then the radial extent (the contact radius where
+     * the zone covers the axis) and the contact area an area. */
+    bool revolved = false;
     /** Integral of the contact pressure over the contact boundary [N]. */
     double integrated_pressure = 0.;
     /** Integral of the interpolated nodal pressure times normal: the force
