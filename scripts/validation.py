@@ -106,7 +106,7 @@ a = %.10g; p0 = %.10g
 p(x) = abs(x) < a ? p0 * sqrt(1 - x**2 / a**2) : 0
 set samples 1000
 plot p(x) w l lw 2 lc rgb 'black' t 'closed form', \\
-     '%s' every ::1 u 1:2 w p pt 7 ps 0.8 lc 1 t 'signorini, nodal pressure'
+     '%s' every ::1 u 1:3 w p pt 7 ps 0.8 lc 1 t 'signorini, nodal pressure'
 """ % (DOC_OUT, last, kelly[-1]["dofs"], HERTZ_A, HERTZ_P0, profile))
 
     def rows_of(rows, strategy):

@@ -20,37 +20,40 @@ namespace signorini
                                const TrilinosWrappers::MPI::Vector &solution,
                                const MPI_Comm mpi_communicator)
   {
-    std::vector<std::array<double, dim + 1>> rows;
+    // x, y[, z], pressure, gap, obstacle: a node at a corner has one row
+    // per obstacle it touches.
+    using Row = std::array<double, dim + 3>;
+    std::vector<Row> rows;
     for (const auto &node : surface.nodes())
       if (node.owned)
         {
-          std::array<double, dim + 1> row;
-          unsigned int                column = 0;
-          for (; column < dim - 1; ++column)
-            row[column] = node.position[column];
-          row[column++] = pressure(node.scalar_dof);
-          row[column]   = surface.deformed_gap(node, solution);
+          Row row;
+          for (unsigned int d = 0; d < dim; ++d)
+            row[d] = node.position[d];
+          row[dim]     = pressure(node.scalar_dof);
+          row[dim + 1] = surface.deformed_gap(node, solution);
+          row[dim + 2] = surface.obstacles().number(node.obstacle);
           rows.push_back(row);
         }
     const auto gathered = Utilities::MPI::gather(mpi_communicator, rows);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
-    std::vector<std::array<double, dim + 1>> all;
+    std::vector<Row> all;
     for (const auto &part : gathered)
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end());
 
     write_atomically(file, [&](std::ostream &out) {
-      out << (dim == 2 ? "x" : "x,y") << ",pressure,gap\n";
+      out << (dim == 2 ? "x,y" : "x,y,z") << ",pressure,gap,obstacle\n";
       char number[32];
       for (const auto &row : all)
         {
-          for (unsigned int c = 0; c <= dim; ++c)
+          for (unsigned int c = 0; c < dim + 2; ++c)
             {
-              std::snprintf(number, sizeof(number), "%.10e", row[c]);
-              out << (c > 0 ? "," : "") << number;
+              std::snprintf(number, sizeof(number), "%.10e,", row[c]);
+              out << number;
             }
-          out << '\n';
+          out << static_cast<unsigned int>(row[dim + 2]) << '\n';
         }
     });
   }

@@ -28,9 +28,11 @@ namespace signorini
                       entry_text::of(defaults.contact_pressure_table),
                       Patterns::Bool(),
                       "Write contact_pressure-CC.csv for every cycle CC: one "
-                      "row per contact node, sorted by x, with its "
-                      "coordinates x[, y] [mm], the contact pressure [MPa] "
-                      "and the gap to the obstacle after deformation [mm].");
+                      "row per contact node (and obstacle it faces), sorted "
+                      "by x, with its coordinates x, y[, z] [mm], the "
+                      "contact pressure [MPa], the gap to the obstacle "
+                      "after deformation [mm] and the obstacle's number (1 "
+                      "for Obstacle, N for Obstacle N).");
     prm.declare_entry("Verbose",
                       entry_text::of(defaults.verbose),
                       Patterns::Bool(),
