@@ -42,7 +42,9 @@ namespace signorini
       "Exit status: 0 success, 1 bad input or command line, 2 contact solver\n"
       "did not converge, 3 active set cycling, 4 linear solver failed, 5 other\n"
       "error (out of memory, a file that cannot be written), 6 contact solver\n"
-      "stalled, 7 augmented Lagrangian multipliers too slow.\n";
+      "stalled, 7 augmented Lagrangian multipliers too slow, 130 interrupted\n"
+      "by SIGINT and 143 by SIGTERM (after the last finished cycle, which\n"
+      "--resume continues from).\n";
 
     /** What the command line asks for. */
     struct Command
@@ -206,18 +208,19 @@ namespace signorini
           {
             std::rethrow_exception(failure);
           }
-        catch (const std::bad_alloc &)
+        catch (const std::bad_alloc &lack)
           {
+            // What ran out, where a library said (MUMPS).
+            const auto        *known = dynamic_cast<const OutOfMemory *>(&lack);
             const std::string &directory = parameters.output.directory;
             throw SolverFailure(
               exit_status::other,
               "out of memory on cycle " +
                 std::to_string(listed_cycles(directory)) +
-                " (the cycles "
-                "before it are in " +
-                directory +
-                "; fewer Mesh "
-                "refinement/Number of cycles or a smaller Mesh "
+                (known ? std::string(": ") + known->what() : "") +
+                " (the cycles before it are in " + directory +
+                (known ? "; Linear solver/Type = amg cg needs far less" : "") +
+                "; fewer Mesh refinement/Number of cycles or a smaller Mesh "
                 "refinement/Refine fraction need less)");
           }
     }

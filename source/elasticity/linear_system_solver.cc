@@ -4,6 +4,7 @@
 
 #include <signorini/base/failures.h>
 #include <signorini/base/memory.h>
+#include <signorini/elasticity/direct_solver_status.h>
 #include <signorini/elasticity/linear_system_solver.h>
 
 #include <Amesos.h>
@@ -13,6 +14,8 @@
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
+#include <sstream>
 
 namespace signorini
 {
@@ -22,6 +25,40 @@ namespace signorini
   {
     const char *singular = "linear solver failed: the system is singular or "
                            "the solver broke down";
+
+    /**
+     * Runs @p phase of the direct solver @p solver (a symbolic or numeric
+     * factorisation, a solve) with its messages on standard error held
+     * back (Amesos' MUMPS prints its failures there and returns success),
+     * and throws what failed: OutOfMemory where MUMPS lacked memory, else
+     * a SolverFailure.
+     */
+    template <typename Phase>
+    void
+    run_direct_phase(Amesos_BaseSolver &solver, const Phase &phase)
+    {
+      std::ostringstream held;
+      std::streambuf    *error_stream = std::cerr.rdbuf(held.rdbuf());
+      int                result       = 0;
+      try
+        {
+          result = phase();
+        }
+      catch (...)
+        {
+          std::cerr.rdbuf(error_stream);
+          throw;
+        }
+      std::cerr.rdbuf(error_stream);
+      const auto status = direct_solver_status(solver);
+      if (status.out_of_memory())
+        throw OutOfMemory(status.text());
+      if (status.error != 0)
+        throw SolverFailure(exit_status::linear_solver,
+                            "linear solver failed: " + status.text());
+      if (result != 0)
+        throw SolverFailure(exit_status::linear_solver, singular);
+    }
 
     /** The digits by which CG reduced the residual, at least one. */
     double
@@ -88,11 +125,10 @@ namespace signorini
           factory.Query("Amesos_Mumps") ? "Amesos_Mumps" : "Amesos_Klu";
         direct.reset(factory.Create(name, *problem));
         AssertThrow(direct, ExcMessage("Trilinos Amesos has no direct solver"));
-        if (direct->SymbolicFactorization() != 0)
-          throw SolverFailure(exit_status::linear_solver, singular);
+        run_direct_phase(*direct,
+                         [&]() { return direct->SymbolicFactorization(); });
       }
-    if (direct->NumericFactorization() != 0)
-      throw SolverFailure(exit_status::linear_solver, singular);
+    run_direct_phase(*direct, [&]() { return direct->NumericFactorization(); });
     factorised = true;
   }
 
@@ -106,8 +142,7 @@ namespace signorini
     TimerOutput::Scope t(timer, "Solve: back-substitution");
     problem->SetLHS(&solution.trilinos_vector());
     problem->SetRHS(const_cast<Epetra_MultiVector *>(&rhs.trilinos_vector()));
-    if (direct->Solve() != 0)
-      throw SolverFailure(exit_status::linear_solver, singular);
+    run_direct_phase(*direct, [&]() { return direct->Solve(); });
     // KLU does not report a singular matrix, nor MUMPS a badly
     // conditioned one: check the result.
     TrilinosWrappers::MPI::Vector residual(rhs);

@@ -1,6 +1,7 @@
 #ifndef signorini_base_failures_h
 #define signorini_base_failures_h
 
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +34,29 @@ namespace signorini
     }
 
     const int status;
+  };
+
+  /**
+   * A lack of memory that a library reported rather than threw (MUMPS):
+   * a std::bad_alloc, so that it is reported as one, with what could not
+   * be had.
+   */
+  class OutOfMemory : public std::bad_alloc
+  {
+  public:
+    explicit OutOfMemory(const std::string &what_failed)
+      : message(what_failed)
+    {
+    }
+
+    const char *
+    what() const noexcept override
+    {
+      return message.c_str();
+    }
+
+  private:
+    std::string message;
   };
 } // namespace signorini
 
