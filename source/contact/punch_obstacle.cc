@@ -67,11 +67,12 @@ namespace signorini
     if constexpr (dim == 2)
       {
         Tensor<1, dim> t;
-        t[0] = -unit_normal[1];
-        t[1] = unit_normal[0];
-        const Point<dim> left = center - radius * t, right = center + radius * t;
-        mesh.points = {left + back, left, right, right + back};
-        mesh.cells  = {{0, 1}, {1, 2}, {2, 3}};
+        t[0]                   = -unit_normal[1];
+        t[1]                   = unit_normal[0];
+        const Point<dim> left  = center - radius * t,
+                         right = center + radius * t;
+        mesh.points            = {left + back, left, right, right + back};
+        mesh.cells             = {{0, 1}, {1, 2}, {2, 3}};
       }
     else
       {

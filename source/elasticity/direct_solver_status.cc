@@ -36,8 +36,11 @@ namespace signorini
         const double megabytes =
           detail < 0 ? -static_cast<double>(detail) : 8e-6 * detail;
         return "the direct solver could not allocate " +
-               std::to_string(static_cast<long long>(megabytes + 0.5)) +
-               " MB for the factorisation " + code;
+               (megabytes >= 1 ?
+                  std::to_string(static_cast<long long>(megabytes + 0.5)) +
+                    " MB" :
+                  std::string("memory")) +
+               " for the factorisation " + code;
       }
     if (out_of_memory())
       return "the direct solver ran out of memory " + code;

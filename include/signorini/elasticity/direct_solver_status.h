@@ -28,8 +28,9 @@ namespace signorini
     bool
     out_of_memory() const;
 
-    /** The error for a message: "MUMPS could not allocate 400 MB (INFOG(1)
-     * = -13)". Empty on success. */
+    /** The error for a message: "the direct solver could not allocate 400 MB
+     * for the factorisation (MUMPS INFOG(1) = -13, INFOG(2) = -400)". Empty
+     * on success. */
     std::string
     text() const;
   };
