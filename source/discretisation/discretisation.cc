@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
@@ -97,6 +98,14 @@ namespace signorini
   {
     dofs.reinit(*mesh);
     dofs.distribute_dofs(*element);
+    // The numbering deal.II gives follows the order in which the cells
+    // were made, so that a mesh loaded from a checkpoint is numbered unlike
+    // the same mesh refined cycle by cycle, and the iterative solvers'
+    // digits differ. The order of the cell hierarchy (from each coarse
+    // cell down) depends on the mesh alone: a resumed run repeats the
+    // uninterrupted one.
+    if (saves_mesh())
+      DoFRenumbering::hierarchical(dofs);
     owned_dofs = dofs.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
 
