@@ -36,6 +36,7 @@ namespace signorini
       if (given.is_constrained(i))
         constrained.push_back(partitioner.global_to_local(i));
     compute_diagonal();
+    matrix_free.initialize_dof_vector(projected);
     set_contact({}, {});
   }
 
@@ -115,7 +116,9 @@ namespace signorini
     if (!held.empty())
       {
         // P src: the held dofs from the dofs of their vertex.
-        projected = src;
+        // (Not operator=, which is collective: processes without held
+        // dofs do not come here.)
+        projected.copy_locally_owned_data_from(src);
         for (const auto &[dof, entries] : held)
           {
             double value = 0.;
