@@ -106,6 +106,13 @@ namespace signorini
                         boundary_conditions.dirichlet);
         levels_ready  = true;
         contact_ready = false;
+        if (verbose)
+          {
+            pcout << "   multigrid levels (dofs):";
+            for (const auto size : multigrid.level_sizes())
+              pcout << ' ' << size;
+            pcout << std::endl;
+          }
       }
   }
 

@@ -25,8 +25,8 @@ namespace signorini
    * (deal.II's MGTransferGlobalCoarsening): the levels are the fine mesh
    * coarsened once, twice, ... down to the coarse mesh, each with its
    * hanging nodes and the homogeneous Dirichlet data. Chebyshev smoothing
-   * on the inverse diagonal; the coarsest level solved directly (Trilinos
-   * Amesos KLU) on its assembled matrix.
+   * (degree 3) on the inverse diagonal; the coarsest level solved directly
+   * (Trilinos Amesos KLU) on its assembled matrix.
    *
    * Contact on the coarser levels: the fine level has its held lines and
    * springs exactly; a coarser level has the springs, and the held nodes as
@@ -73,6 +73,10 @@ namespace signorini
     /** The number of levels, the fine one included. */
     unsigned int
     n_levels() const;
+
+    /** The number of dofs of each level, coarsest first. */
+    std::vector<dealii::types::global_dof_index>
+    level_sizes() const;
 
     /** Whether setup() was called since the last clear(). */
     bool
