@@ -13,7 +13,8 @@ namespace signorini
     const Choices<LinearSolverParameters::Type> solver_types{
       {LinearSolverParameters::Type::automatic, "automatic"},
       {LinearSolverParameters::Type::direct, "direct"},
-      {LinearSolverParameters::Type::amg_cg, "amg cg"}};
+      {LinearSolverParameters::Type::amg_cg, "amg cg"},
+      {LinearSolverParameters::Type::matrix_free, "matrix-free"}};
   } // namespace
 
   void
@@ -28,7 +29,12 @@ namespace signorini
                       "conjugate gradients with algebraic multigrid (Trilinos "
                       "ML); automatic: direct in 2D on one process, amg cg "
                       "in 3D and on several processes, the faster choice as "
-                      "measured (see README).");
+                      "measured (see README); matrix-free: no matrix, the "
+                      "elastic operator evaluated cell by cell and CG with "
+                      "geometric multigrid (quadrilaterals and hexahedra, "
+                      "not axisymmetric, volumetric strain pointwise; "
+                      "Tolerance, Newton tolerance and Maximum iterations "
+                      "as for amg cg).");
     prm.declare_entry("Tolerance",
                       entry_text::of(defaults.tolerance),
                       Patterns::Double(0.),
@@ -74,7 +80,7 @@ namespace signorini
   LinearSolverParameters::resolved_type(const unsigned int dim,
                                         const unsigned int n_processes) const
   {
-    if (type != Type::automatic)
+    if (type != Type::automatic && type != Type::matrix_free)
       return type;
     return dim == 2 && n_processes == 1 ? Type::direct : Type::amg_cg;
   }

@@ -140,6 +140,20 @@ namespace signorini
                            "an axisymmetric body's resultant is axial: its "
                            "first (radial) component must be 0");
       }
+    if (linear_solver.type == LinearSolverParameters::Type::matrix_free)
+      {
+        if (material.axisymmetric())
+          throw InputError("Linear solver/Type",
+                           "matrix-free evaluates plane strain, plane stress "
+                           "and 3D; an axisymmetric model (Material/Plane "
+                           "state) needs amg cg or direct");
+        if (material.mean_dilatation<dim>(false))
+          throw InputError("Linear solver/Type",
+                           "matrix-free takes the volumetric strain at every "
+                           "point; the cell mean (Material/Volumetric strain, "
+                           "automatic from Poisson's ratio 0.4 on) needs amg "
+                           "cg or direct");
+      }
 
     std::ostringstream printed;
     prm.print_parameters(printed, ParameterHandler::ShortPRM);

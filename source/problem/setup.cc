@@ -1,5 +1,5 @@
 #include <signorini/contact/newton_driver.h>
-#include <signorini/elasticity/assembled_operator.h>
+#include <signorini/elasticity/elastic_operator.h>
 #include <signorini/problem/contact_problem.h>
 
 namespace signorini
@@ -23,14 +23,15 @@ namespace signorini
                      mpi_communicator,
                      parameters.material.axisymmetric())
     , loads(parameters.boundary_conditions, discretisation)
-    , elastic_operator(
-        std::make_unique<AssembledOperator<dim>>(discretisation,
-                                                 parameters.material,
-                                                 loads,
-                                                 parameters.linear_solver,
-                                                 parameters.contact.remedies,
-                                                 pcout,
-                                                 timer))
+    , elastic_operator(create_elastic_operator(discretisation,
+                                               parameters.material,
+                                               parameters.boundary_conditions,
+                                               loads,
+                                               parameters.linear_solver,
+                                               parameters.contact.remedies,
+                                               parameters.output.verbose,
+                                               pcout,
+                                               timer))
     , obstacle(create_obstacles(parameters.obstacle))
     , contact_surface(parameters.obstacle.contact_ids,
                       *obstacle,

@@ -1,9 +1,13 @@
 #ifndef signorini_elasticity_elastic_operator_h
 #define signorini_elasticity_elastic_operator_h
 
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <signorini/contact/contact_linearisation.h>
+
+#include <memory>
 
 namespace signorini
 {
@@ -60,6 +64,31 @@ namespace signorini
     virtual void
     release() = 0;
   };
+
+  template <int dim>
+  class Discretisation;
+  template <int dim>
+  class Loads;
+  template <int dim>
+  struct BoundaryConditions;
+  struct Material;
+  class LinearSolverParameters;
+
+  /** The elastic operator that Linear solver/Type names: MatrixFreeOperator
+   * for `matrix-free`, AssembledOperator otherwise. @p remedies: failed
+   * solves are retried (see LinearSystemSolver, MatrixFreeOperator);
+   * @p verbose: the matrix-free operator prints its CG iterations. */
+  template <int dim>
+  std::unique_ptr<ElasticOperator<dim>>
+  create_elastic_operator(const Discretisation<dim>     &discretisation,
+                          const Material                &material,
+                          const BoundaryConditions<dim> &boundary_conditions,
+                          Loads<dim>                    &loads,
+                          const LinearSolverParameters  &parameters,
+                          const bool                     remedies,
+                          const bool                     verbose,
+                          dealii::ConditionalOStream    &pcout,
+                          dealii::TimerOutput           &timer);
 } // namespace signorini
 
 #endif

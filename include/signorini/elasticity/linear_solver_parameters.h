@@ -12,7 +12,9 @@ namespace signorini
    * conjugate gradients preconditioned by Trilinos ML algebraic multigrid,
    * with the translations as near-null space; `automatic` takes direct in
    * 2D on one process, amg cg in 3D and on several processes (see
-   * resolved_type()).
+   * resolved_type()). `matrix-free` holds no matrix: MatrixFreeOperator,
+   * CG with geometric multigrid (Q1, pointwise volumetric strain, not
+   * axisymmetric).
    */
   class LinearSolverParameters
   {
@@ -21,7 +23,8 @@ namespace signorini
     {
       automatic,
       direct,
-      amg_cg
+      amg_cg,
+      matrix_free
     };
 
     /** Declares the entries, with the defaults of a default-constructed
@@ -35,7 +38,8 @@ namespace signorini
     /** The solver that runs for a system of @p dim displacement components
      * on @p n_processes MPI processes: `direct` or `amg_cg` as given;
      * `automatic` is direct for @p dim = 2 on one process and amg cg
-     * otherwise. */
+     * otherwise; `matrix_free`, whose assembled system is solved only as a
+     * remedy, as `automatic`. */
     Type
     resolved_type(const unsigned int dim, const unsigned int n_processes) const;
 

@@ -1,0 +1,181 @@
+#ifndef signorini_elasticity_elastic_level_operator_h
+#define signorini_elasticity_elastic_level_operator_h
+
+#include <deal.II/base/subscriptor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <deal.II/matrix_free/matrix_free.h>
+
+#include <signorini/elasticity/material.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * The stiffness operator of Q1 elasticity on one mesh, evaluated cell by
+   * cell with deal.II's MatrixFree (vectorised over cells, any number of
+   * processes): the integral of eps(v) : sigma(u) with the isotropic law of
+   * Material (plane strain, plane stress or 3D, volumetric strain at every
+   * point). The hanging-node and Dirichlet constraints given to reinit()
+   * are condensed; their rows act as the identity.
+   *
+   * Around it, what contact adds, both local to a vertex:
+   * - held lines: dofs expressed by other dofs of their vertex,
+   *   u_s = sum_m w_m u_m (+ an inhomogeneity the caller lifts), the
+   *   operator being P^T A P with P the map that sets them; their rows act
+   *   as the identity;
+   * - nodal blocks: a dim x dim stiffness added at a vertex's dofs (springs
+   *   k n n^T).
+   *
+   * One level of ElasticMultigrid, and the fine-level operator that CG
+   * solves with.
+   */
+  template <int dim>
+  class ElasticLevelOperator : public dealii::Subscriptor
+  {
+  public:
+    using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
+    using value_type = double;
+    using Evaluation = dealii::FEEvaluation<dim, 1, 2, dim, double>;
+
+    /** A held dof and the dofs of its vertex it is solved from (global
+     * indices, all owned here). */
+    struct HeldLine
+    {
+      dealii::types::global_dof_index                                 dof;
+      std::vector<std::pair<dealii::types::global_dof_index, double>> entries;
+    };
+
+    /** A stiffness at the dofs of a vertex (global indices, owned here);
+     * only its entries between unconstrained, not held dofs act. */
+    struct NodalBlock
+    {
+      std::array<dealii::types::global_dof_index, dim> dofs;
+      std::array<std::array<double, dim>, dim>         stiffness;
+    };
+
+    ElasticLevelOperator(const Material &material);
+
+    /** The operator of @p dof_handler's active cells with the
+     * @p constraints (hanging nodes and Dirichlet dofs; inhomogeneities are
+     * ignored), which must live as long as it. Forgets the contact. */
+    void
+    reinit(const dealii::Mapping<dim>              &mapping,
+           const dealii::DoFHandler<dim>           &dof_handler,
+           const dealii::AffineConstraints<double> &constraints);
+
+    /** Frees everything. */
+    void
+    clear();
+
+    /** Sets what contact adds (see the class); recomputes the diagonal. */
+    void
+    set_contact(std::vector<HeldLine> held, std::vector<NodalBlock> blocks);
+
+    /** dst = operator * src. */
+    void
+    vmult(VectorType &dst, const VectorType &src) const;
+
+    void
+    Tvmult(VectorType &dst, const VectorType &src) const;
+
+    /** dst = C^T K u, the internal force of the displacement @p u read as
+     * it is at every dof (constraints satisfied), with the hanging nodes
+     * condensed and zero at the constrained dofs; no contact. */
+    void
+    internal_force(VectorType &dst, const VectorType &u) const;
+
+    /** @p force = P^T @p force (a held dof's force moved to the dofs it is
+     * solved from), then zero at the identity rows. */
+    void
+    condense(VectorType &force) const;
+
+    /** The inverse of the operator's diagonal (the held lines' cross terms
+     * left out), for the Chebyshev smoother. */
+    const VectorType &
+    inverse_diagonal() const;
+
+    /** The diagonal of the operator without contact (1 at constrained
+     * dofs). */
+    const VectorType &
+    diagonal() const;
+
+    /** The operator as a Trilinos matrix (the coarse level's). */
+    void
+    assemble_matrix(dealii::TrilinosWrappers::SparseMatrix &matrix) const;
+
+    void
+    initialize_dof_vector(VectorType &vector) const;
+
+    /** The diagonal entry (@p i = @p j, locally owned) as inverse_diagonal()
+     * has it: what PreconditionChebyshev asks of a matrix (unused, since
+     * the smoothers get the inverse diagonal). */
+    double
+    el(const dealii::types::global_dof_index i,
+       const dealii::types::global_dof_index j) const;
+
+    /** The number of dofs. */
+    dealii::types::global_dof_index
+    m() const;
+
+    /** The locally owned dofs (local indices, sorted) whose rows are the
+     * identity: the constrained and the held ones. */
+    const std::vector<unsigned int> &
+    identity_rows() const;
+
+    const dealii::DoFHandler<dim> &
+    get_dof_handler() const;
+
+  private:
+    /** The stress of a cell's quadrature points, integrated. */
+    void
+    apply_cell(Evaluation &phi) const;
+
+    void
+    local_apply(const dealii::MatrixFree<dim, double>       &data,
+                VectorType                                  &dst,
+                const VectorType                            &src,
+                const std::pair<unsigned int, unsigned int> &cells) const;
+
+    void
+    local_internal_force(
+      const dealii::MatrixFree<dim, double>       &data,
+      VectorType                                  &dst,
+      const VectorType                            &src,
+      const std::pair<unsigned int, unsigned int> &cells) const;
+
+    void
+    compute_diagonal();
+
+    const double                             mu;
+    const double                             lambda;
+    dealii::MatrixFree<dim, double>          matrix_free;
+    const dealii::AffineConstraints<double> *constraints = nullptr;
+    /** Locally owned constrained dofs (local indices). */
+    std::vector<unsigned int> constrained;
+    /** constrained and the held dofs, sorted. */
+    std::vector<unsigned int> identity;
+    /** The held lines in local indices. */
+    std::vector<
+      std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
+      held;
+    /** The nodal blocks in local indices, without constrained or held
+     * entries. */
+    std::vector<std::pair<std::array<unsigned int, dim>,
+                          std::array<std::array<double, dim>, dim>>>
+               blocks;
+    VectorType diagonal_without_contact;
+    VectorType inverse;
+    /** src with the held dofs set (mutable scratch of vmult). */
+    mutable VectorType projected;
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,119 @@
+#ifndef signorini_elasticity_elastic_multigrid_h
+#define signorini_elasticity_elastic_multigrid_h
+
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/multigrid/mg_base.h>
+#include <deal.II/multigrid/mg_matrix.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/mg_transfer_global_coarsening.h>
+#include <deal.II/multigrid/multigrid.h>
+
+#include <signorini/elasticity/elastic_level_operator.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * Geometric multigrid for ElasticLevelOperator by global coarsening
+   * (deal.II's MGTransferGlobalCoarsening): the levels are the fine mesh
+   * coarsened once, twice, ... down to the coarse mesh, each with its
+   * hanging nodes and the homogeneous Dirichlet data. Chebyshev smoothing
+   * (degree 3) on the inverse diagonal; the coarsest level solved directly
+   * (Trilinos Amesos KLU) on its assembled matrix.
+   *
+   * Contact on the coarser levels: the fine level has its held lines and
+   * springs exactly; a coarser level has the springs, and the held nodes as
+   * springs, restricted to it (sum_f phi_c(x_f) k_f n_f n_f^T at its
+   * vertex c): a body held by contact alone stays held on every level.
+   */
+  template <int dim>
+  class ElasticMultigrid
+  {
+  public:
+    using VectorType    = dealii::LinearAlgebra::distributed::Vector<double>;
+    using LevelOperator = ElasticLevelOperator<dim>;
+
+    ElasticMultigrid(const Material &material);
+    ~ElasticMultigrid();
+
+    /**
+     * The coarser levels below @p fine, whose mesh is coarsened globally,
+     * with the Dirichlet data @p dirichlet (boundary ids and components)
+     * made homogeneous; @p fine_constraints are those of @p fine.
+     */
+    void
+    setup(const dealii::Mapping<dim>                          &mapping,
+          const std::shared_ptr<LevelOperator>                &fine,
+          const dealii::AffineConstraints<double>             &fine_constraints,
+          const std::vector<std::pair<dealii::types::boundary_id,
+                                      dealii::ComponentMask>> &dirichlet);
+
+    /**
+     * The contact of the coarser levels from the fine level's nodal
+     * stiffnesses: @p diagonal holds sum k n_a^2 at component a of a
+     * vertex, @p off_diagonal k n_x n_y (2D), or k n_x n_y, k n_y n_z,
+     * k n_x n_z (3D) at its components; then the smoothers and the coarse
+     * factorisation anew (also when the fine level's contact changed).
+     * Throws SolverFailure if the coarse matrix is singular.
+     */
+    void
+    update(const VectorType &diagonal, const VectorType &off_diagonal);
+
+    /** One V-cycle: dst = M^-1 src. */
+    void
+    vmult(VectorType &dst, const VectorType &src) const;
+
+    /** The number of levels, the fine one included. */
+    unsigned int
+    n_levels() const;
+
+    /** The number of dofs of each level, coarsest first. */
+    std::vector<dealii::types::global_dof_index>
+    level_sizes() const;
+
+    /** Whether setup() was called since the last clear(). */
+    bool
+    ready() const;
+
+    void
+    clear();
+
+  private:
+    using Smoother =
+      dealii::PreconditionChebyshev<LevelOperator,
+                                    VectorType,
+                                    dealii::DiagonalMatrix<VectorType>>;
+
+    const Material                                                &material;
+    std::vector<std::shared_ptr<const dealii::Triangulation<dim>>> meshes;
+    std::vector<std::unique_ptr<dealii::DoFHandler<dim>>>          dofs;
+    dealii::MGLevelObject<dealii::AffineConstraints<double>>       constraints;
+    dealii::MGLevelObject<std::shared_ptr<LevelOperator>>          operators;
+    dealii::MGLevelObject<dealii::MGTwoLevelTransfer<dim, VectorType>>
+      transfers;
+    std::unique_ptr<dealii::MGTransferGlobalCoarsening<dim, VectorType>>
+                                   transfer;
+    dealii::mg::Matrix<VectorType> mg_matrix;
+    dealii::MGSmootherPrecondition<LevelOperator, Smoother, VectorType>
+                                                            smoother;
+    dealii::TrilinosWrappers::SparseMatrix                  coarse_matrix;
+    dealii::SolverControl                                   coarse_control;
+    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
+    std::unique_ptr<dealii::MGCoarseGridBase<VectorType>>   coarse;
+    std::unique_ptr<dealii::Multigrid<VectorType>>          multigrid;
+    std::unique_ptr<dealii::PreconditionMG<
+      dim,
+      VectorType,
+      dealii::MGTransferGlobalCoarsening<dim, VectorType>>>
+      preconditioner;
+  };
+} // namespace signorini
+
+#endif

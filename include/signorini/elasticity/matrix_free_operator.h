@@ -1,0 +1,145 @@
+#ifndef signorini_elasticity_matrix_free_operator_h
+#define signorini_elasticity_matrix_free_operator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <signorini/discretisation/discretisation.h>
+#include <signorini/elasticity/boundary_conditions.h>
+#include <signorini/elasticity/elastic_level_operator.h>
+#include <signorini/elasticity/elastic_multigrid.h>
+#include <signorini/elasticity/elastic_operator.h>
+#include <signorini/elasticity/linear_solver_parameters.h>
+#include <signorini/elasticity/loads.h>
+#include <signorini/elasticity/material.h>
+
+#include <cstddef>
+#include <memory>
+#include <utility>
+
+namespace signorini
+{
+  template <int dim>
+  class AssembledOperator;
+
+  /**
+   * The elastic operator without a matrix (`Linear solver/Type =
+   * matrix-free`): Q1 on quadrilaterals and hexahedra evaluated cell by cell
+   * (ElasticLevelOperator), the Newton systems solved by CG with geometric
+   * multigrid (ElasticMultigrid).
+   *
+   * The Newton system of a contact linearisation: with G the discretisation's
+   * constraints and the held nodes' (closed together, as AssembledOperator
+   * condenses them), u = u0 + d, where u0 is the current displacement with
+   * G applied and d solves P^T (K + S) P d = -R(u0) on the dofs G leaves
+   * free; P sets the held dofs from the other dofs of their vertex, S are
+   * the springs, and R is the residual K u - f of the Newton system. The
+   * same system as the assembled one, to the solvers' tolerance.
+   *
+   * With @p remedies, a solve that fails is repeated by an AssembledOperator
+   * (a `remedy:` line), which then serves until the next mesh.
+   */
+  template <int dim>
+  class MatrixFreeOperator : public ElasticOperator<dim>
+  {
+  public:
+    using VectorType = typename ElasticOperator<dim>::VectorType;
+
+    /** Throws InputError (Linear solver/Type) unless the element is Q1
+     * (checked at reinit()). @p verbose: a line per solve with the CG
+     * iterations. */
+    MatrixFreeOperator(const Discretisation<dim>     &discretisation,
+                       const Material                &material,
+                       const BoundaryConditions<dim> &boundary_conditions,
+                       Loads<dim>                    &loads,
+                       const LinearSolverParameters  &parameters,
+                       const bool                     remedies,
+                       const bool                     verbose,
+                       dealii::ConditionalOStream    &pcout,
+                       dealii::TimerOutput           &timer);
+    ~MatrixFreeOperator() override;
+
+    void
+    reinit() override;
+
+    void
+    assemble_load() override;
+
+    const VectorType &
+    load() const override;
+
+    void
+    residual(const VectorType &u, VectorType &residual) override;
+
+    void
+    solve(const ContactLinearisation<dim> &linearisation,
+          VectorType                      &u,
+          const bool                       final_step) override;
+
+    void
+    invalidate() override;
+
+    void
+    release() override;
+
+  private:
+    using LAVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+    /** The fine operator of the current mesh. */
+    void
+    setup_fine();
+
+    /** The fine operator and the multigrid levels of the current mesh. */
+    void
+    setup_levels();
+
+    /** The held nodes' constraints, the springs, and the multigrid's
+     * contact for @p linearisation. */
+    void
+    setup_contact(const ContactLinearisation<dim> &linearisation);
+
+    /** @p r = P^T (K u - f + S u + the springs' forces) for @p u with the
+     * constraints G applied; zero at the held and constrained dofs. */
+    void
+    newton_residual(const ContactLinearisation<dim> &linearisation,
+                    const VectorType                &u,
+                    LAVector                        &r) const;
+
+    /** CG with multigrid on d; returns the iterations. */
+    unsigned int
+    solve_cg(const ContactLinearisation<dim> &linearisation,
+             VectorType                      &u,
+             const bool                       final_step);
+
+    void
+    to_la(const VectorType &in, LAVector &out) const;
+    void
+    from_la(const LAVector &in, VectorType &out) const;
+
+    const Discretisation<dim>     &discretisation;
+    const Material                &material;
+    const BoundaryConditions<dim> &boundary_conditions;
+    Loads<dim>                    &loads;
+    const LinearSolverParameters  &parameters;
+    const bool                     remedies;
+    const bool                     verbose;
+    dealii::ConditionalOStream    &pcout;
+    dealii::TimerOutput           &timer;
+
+    std::shared_ptr<ElasticLevelOperator<dim>> fine;
+    ElasticMultigrid<dim>                      multigrid;
+    bool                                       levels_ready = false;
+    /** The discretisation's constraints plus the held contact nodes. */
+    dealii::AffineConstraints<double> constraints;
+    bool                              contact_ready = false;
+    std::pair<std::pair<unsigned int, std::size_t>, double> contact_for;
+    VectorType                                              load_vector;
+    LAVector                                                load_la;
+    /** The assembled operator of a remedy, until the next mesh. */
+    std::unique_ptr<AssembledOperator<dim>> fallback;
+  };
+} // namespace signorini
+
+#endif

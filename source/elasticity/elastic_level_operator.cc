@@ -1,0 +1,334 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/matrix_free/tools.h>
+
+#include <signorini/elasticity/elastic_level_operator.h>
+
+#include <algorithm>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  template <int dim>
+  ElasticLevelOperator<dim>::ElasticLevelOperator(const Material &material)
+    : mu(material.mu())
+    , lambda(material.template lambda<dim>())
+  {
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::reinit(const Mapping<dim>              &mapping,
+                                    const DoFHandler<dim>           &dofs,
+                                    const AffineConstraints<double> &given)
+  {
+    constraints = &given;
+    typename MatrixFree<dim, double>::AdditionalData data;
+    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
+    data.mapping_update_flags  = update_gradients | update_JxW_values;
+    matrix_free.reinit(mapping, dofs, given, QGauss<1>(2), data);
+
+    const auto &partitioner = *matrix_free.get_vector_partitioner();
+    constrained.clear();
+    for (const auto i : dofs.locally_owned_dofs())
+      if (given.is_constrained(i))
+        constrained.push_back(partitioner.global_to_local(i));
+    compute_diagonal();
+    matrix_free.initialize_dof_vector(projected);
+    set_contact({}, {});
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::clear()
+  {
+    matrix_free.clear();
+    constraints = nullptr;
+    constrained.clear();
+    identity.clear();
+    held.clear();
+    blocks.clear();
+    diagonal_without_contact.reinit(0);
+    inverse.reinit(0);
+    projected.reinit(0);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::apply_cell(Evaluation &phi) const
+  {
+    phi.evaluate(EvaluationFlags::gradients);
+    for (unsigned int q = 0; q < phi.n_q_points; ++q)
+      {
+        const auto strain     = phi.get_symmetric_gradient(q);
+        auto       stress     = (2. * mu) * strain;
+        const auto volumetric = lambda * trace(strain);
+        for (unsigned int d = 0; d < dim; ++d)
+          stress[d][d] += volumetric;
+        phi.submit_symmetric_gradient(stress, q);
+      }
+    phi.integrate(EvaluationFlags::gradients);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::local_apply(
+    const MatrixFree<dim, double>               &data,
+    VectorType                                  &dst,
+    const VectorType                            &src,
+    const std::pair<unsigned int, unsigned int> &cells) const
+  {
+    Evaluation phi(data);
+    for (unsigned int cell = cells.first; cell < cells.second; ++cell)
+      {
+        phi.reinit(cell);
+        phi.read_dof_values(src);
+        apply_cell(phi);
+        phi.distribute_local_to_global(dst);
+      }
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::local_internal_force(
+    const MatrixFree<dim, double>               &data,
+    VectorType                                  &dst,
+    const VectorType                            &src,
+    const std::pair<unsigned int, unsigned int> &cells) const
+  {
+    Evaluation phi(data);
+    for (unsigned int cell = cells.first; cell < cells.second; ++cell)
+      {
+        phi.reinit(cell);
+        phi.read_dof_values_plain(src);
+        apply_cell(phi);
+        phi.distribute_local_to_global(dst);
+      }
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::vmult(VectorType &dst, const VectorType &src) const
+  {
+    const VectorType *input = &src;
+    if (!held.empty())
+      {
+        // P src: the held dofs from the dofs of their vertex.
+        // (Not operator=, which is collective: processes without held
+        // dofs do not come here.)
+        projected.copy_locally_owned_data_from(src);
+        for (const auto &[dof, entries] : held)
+          {
+            double value = 0.;
+            for (const auto &[master, weight] : entries)
+              value += weight * projected.local_element(master);
+            projected.local_element(dof) = value;
+          }
+        input = &projected;
+      }
+    matrix_free.cell_loop(
+      &ElasticLevelOperator::local_apply, this, dst, *input, true);
+    // P^T: a held row's force goes to the dofs it is solved from.
+    for (const auto &[dof, entries] : held)
+      for (const auto &[master, weight] : entries)
+        dst.local_element(master) += weight * dst.local_element(dof);
+    for (const auto &[dofs, stiffness] : blocks)
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          if (stiffness[a][b] != 0.)
+            dst.local_element(dofs[a]) +=
+              stiffness[a][b] * src.local_element(dofs[b]);
+    for (const unsigned int i : identity)
+      dst.local_element(i) = src.local_element(i);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::Tvmult(VectorType       &dst,
+                                    const VectorType &src) const
+  {
+    vmult(dst, src);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::internal_force(VectorType       &dst,
+                                            const VectorType &u) const
+  {
+    matrix_free.cell_loop(
+      &ElasticLevelOperator::local_internal_force, this, dst, u, true);
+    for (const unsigned int i : constrained)
+      dst.local_element(i) = 0.;
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::condense(VectorType &force) const
+  {
+    for (const auto &[dof, entries] : held)
+      for (const auto &[master, weight] : entries)
+        force.local_element(master) += weight * force.local_element(dof);
+    for (const unsigned int i : identity)
+      force.local_element(i) = 0.;
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::compute_diagonal()
+  {
+    matrix_free.initialize_dof_vector(diagonal_without_contact);
+    MatrixFreeTools::compute_diagonal(matrix_free,
+                                      diagonal_without_contact,
+                                      &ElasticLevelOperator::apply_cell,
+                                      this);
+    for (const unsigned int i : constrained)
+      diagonal_without_contact.local_element(i) = 1.;
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::set_contact(std::vector<HeldLine>   held_lines,
+                                         std::vector<NodalBlock> nodal_blocks)
+  {
+    const auto &partitioner = *matrix_free.get_vector_partitioner();
+    held.clear();
+    for (const auto &line : held_lines)
+      {
+        std::vector<std::pair<unsigned int, double>> entries;
+        for (const auto &[master, weight] : line.entries)
+          entries.emplace_back(partitioner.global_to_local(master), weight);
+        held.emplace_back(partitioner.global_to_local(line.dof), entries);
+      }
+    identity = constrained;
+    for (const auto &line : held)
+      identity.push_back(line.first);
+    std::sort(identity.begin(), identity.end());
+
+    blocks.clear();
+    for (const auto &block : nodal_blocks)
+      {
+        std::array<unsigned int, dim> local;
+        std::array<bool, dim>         acting;
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            local[a] = partitioner.global_to_local(block.dofs[a]);
+            acting[a] =
+              !std::binary_search(identity.begin(), identity.end(), local[a]);
+          }
+        auto stiffness = block.stiffness;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            if (!acting[a] || !acting[b])
+              stiffness[a][b] = 0.;
+        blocks.emplace_back(local, stiffness);
+      }
+
+    // The diagonal of P^T A P + blocks, without the cross terms of the held
+    // lines: a smoother's, not an exact one.
+    inverse = diagonal_without_contact;
+    for (const auto &[dof, entries] : held)
+      for (const auto &[master, weight] : entries)
+        inverse.local_element(master) +=
+          weight * weight * diagonal_without_contact.local_element(dof);
+    for (const auto &[dofs, stiffness] : blocks)
+      for (unsigned int a = 0; a < dim; ++a)
+        inverse.local_element(dofs[a]) += stiffness[a][a];
+    for (const unsigned int i : identity)
+      inverse.local_element(i) = 1.;
+    for (unsigned int i = 0; i < inverse.locally_owned_size(); ++i)
+      inverse.local_element(i) = 1. / inverse.local_element(i);
+  }
+
+  template <int dim>
+  const typename ElasticLevelOperator<dim>::VectorType &
+  ElasticLevelOperator<dim>::inverse_diagonal() const
+  {
+    return inverse;
+  }
+
+  template <int dim>
+  const typename ElasticLevelOperator<dim>::VectorType &
+  ElasticLevelOperator<dim>::diagonal() const
+  {
+    return diagonal_without_contact;
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::assemble_matrix(
+    TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    const auto    &dofs = matrix_free.get_dof_handler();
+    const MPI_Comm comm = dofs.get_communicator();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    TrilinosWrappers::SparsityPattern sparsity(dofs.locally_owned_dofs(),
+                                               dofs.locally_owned_dofs(),
+                                               relevant,
+                                               comm);
+    DoFTools::make_sparsity_pattern(dofs,
+                                    sparsity,
+                                    *constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(comm));
+    sparsity.compress();
+    matrix.reinit(sparsity);
+    MatrixFreeTools::compute_matrix(matrix_free,
+                                    *constraints,
+                                    matrix,
+                                    &ElasticLevelOperator::apply_cell,
+                                    this);
+    // The contact of a coarse level: nodal blocks, no held lines.
+    const auto &partitioner = *matrix_free.get_vector_partitioner();
+    for (const auto &[dofs_of, stiffness] : blocks)
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          if (stiffness[a][b] != 0.)
+            matrix.add(partitioner.local_to_global(dofs_of[a]),
+                       partitioner.local_to_global(dofs_of[b]),
+                       stiffness[a][b]);
+    matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::initialize_dof_vector(VectorType &vector) const
+  {
+    matrix_free.initialize_dof_vector(vector);
+  }
+
+  template <int dim>
+  double
+  ElasticLevelOperator<dim>::el(const types::global_dof_index i,
+                                const types::global_dof_index j) const
+  {
+    AssertThrow(i == j, ExcNotImplemented());
+    return 1. / inverse(i);
+  }
+
+  template <int dim>
+  types::global_dof_index
+  ElasticLevelOperator<dim>::m() const
+  {
+    return matrix_free.get_dof_handler().n_dofs();
+  }
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  ElasticLevelOperator<dim>::identity_rows() const
+  {
+    return identity;
+  }
+
+  template <int dim>
+  const DoFHandler<dim> &
+  ElasticLevelOperator<dim>::get_dof_handler() const
+  {
+    return matrix_free.get_dof_handler();
+  }
+
+  template class ElasticLevelOperator<2>;
+  template class ElasticLevelOperator<3>;
+} // namespace signorini
