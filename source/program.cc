@@ -213,15 +213,26 @@ namespace signorini
             // What ran out, where a library said (MUMPS).
             const auto        *known = dynamic_cast<const OutOfMemory *>(&lack);
             const std::string &directory = parameters.output.directory;
-            throw SolverFailure(
-              exit_status::other,
+            const std::string  message =
               "out of memory on cycle " +
-                std::to_string(listed_cycles(directory)) +
-                (known ? std::string(": ") + known->what() : "") +
-                " (the cycles before it are in " + directory +
-                (known ? "; Linear solver/Type = amg cg needs far less" : "") +
-                "; fewer Mesh refinement/Number of cycles or a smaller Mesh "
-                "refinement/Refine fraction need less)");
+              std::to_string(listed_cycles(directory)) +
+              (known ? std::string(": ") + known->what() : "") +
+              " (the cycles before it are in " + directory +
+              (known ? "; Linear solver/Type = amg cg needs far less" : "") +
+              "; fewer Mesh refinement/Number of cycles or a smaller Mesh "
+              "refinement/Refine fraction need less)";
+            // An allocation that failed may have failed on this process
+            // alone (MUMPS' report is global): the others would wait for it
+            // at their next collective step for ever. This one says so and
+            // stops them all.
+            if (!known && Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+              {
+                std::cerr << "signorini: error: " +
+                               text_check::printable(message)
+                          << std::endl;
+                MPI_Abort(MPI_COMM_WORLD, exit_status::other);
+              }
+            throw SolverFailure(exit_status::other, message);
           }
     }
 
