@@ -85,8 +85,18 @@ namespace signorini
       return result;
     }
 
+    /** Entries a resumed run may change: they choose how the same
+     * equations are solved, not which (a checkpoint written with one
+     * elastic operator resumes with the other). */
+    bool
+    free_on_resume(const std::string &name)
+    {
+      return name == "Linear solver/Type";
+    }
+
     /** What differs between the parameter texts @p saved and @p current,
-     * one entry. */
+     * one entry, apart from the entries free on resume; empty if nothing
+     * does. */
     std::string
     first_difference(const std::string &saved, const std::string &current)
     {
@@ -94,8 +104,12 @@ namespace signorini
       std::map<std::string, std::string> there;
       for (const auto &[name, value] : entries(saved))
         there[name] = value;
+      if (there.size() != here.size())
+        return "the number of entries differs";
       for (const auto &[name, value] : here)
         {
+          if (free_on_resume(name))
+            continue;
           const auto found = there.find(name);
           if (found == there.end())
             return "entry '" + name + "' is not in it";
@@ -103,7 +117,7 @@ namespace signorini
             return "entry '" + name + "' is '" + found->second +
                    "' there and '" + value + "' here";
         }
-      return "its entries differ";
+      return "";
     }
 
     /** The outcome of looking for a checkpoint, sent from process 0. */
@@ -243,12 +257,15 @@ namespace signorini
               std::cerr << "signorini: warning: " << fault
                         << "; resuming from the checkpoint of cycle "
                         << found.cycle << " instead" << std::endl;
-            if (manifest.parameters != parameter_text)
-              found.error =
-                state_file(found.cycle) +
-                ": written by a different parameter set (" +
-                first_difference(manifest.parameters, parameter_text) +
-                "); run without --resume to start afresh";
+            const std::string difference =
+              manifest.parameters == parameter_text ?
+                "" :
+                first_difference(manifest.parameters, parameter_text);
+            if (!difference.empty())
+              found.error = state_file(found.cycle) +
+                            ": written by a different parameter set (" +
+                            difference +
+                            "); run without --resume to start afresh";
             else
               found.state = std::move(manifest.state);
           }
