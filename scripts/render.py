@@ -77,6 +77,28 @@ def revolve(source, capping):
     return swept
 
 
+def white_view():
+    """A render view of the picture's size, white, without axes."""
+    view = simple.CreateView("RenderView")
+    view.ViewSize = [WIDTH, HEIGHT]
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    view.OrientationAxesVisibility = 0
+    return view
+
+
+def show_caption(view, text):
+    """@p text in black in the view's upper left corner."""
+    label = simple.Show(simple.Text(Text=text), view)
+    label.Color = [0, 0, 0]
+    label.FontSize = 14
+    label.WindowLocation = "Upper Left Corner"
+    label.Justification = "Left"
+
+
 def stress_colours(body, view, pairs):
     """Colours body by the von Mises stress, with the scale ending where only
     1 % of the measure is more stressed; pairs: (stress, measure) per cell,
@@ -160,14 +182,7 @@ def render_revolved(reader, n_cycles, time):
                              [1.1 * bounds[1], 0, 0], [-1, 0, 0])
     ground_3d = revolve(obstacle, 0)
 
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [WIDTH, HEIGHT]
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.OrientationAxesVisibility = 0
+    view = white_view()
     body = simple.Show(body_3d, view)
     # The colour range ends where 1 % of the revolved body's volume (of the
     # part shown), cell areas times 2 pi r, is more stressed.
@@ -200,12 +215,7 @@ def render_revolved(reader, n_cycles, time):
                  "(max %.3g MPa)" % pairs[-1][0])
     if window < size:
         caption_2 += "; %.3g mm around the contact" % window
-    text = simple.Text(Text=caption + "\n" + caption_2)
-    label = simple.Show(text, view)
-    label.Color = [0, 0, 0]
-    label.FontSize = 14
-    label.WindowLocation = "Upper Left Corner"
-    label.Justification = "Left"
+    show_caption(view, caption + "\n" + caption_2)
 
     # From the obstacle's side of the contact plane, into the missing
     # quarter (between 270 and 360 degrees), through the half-transparent
@@ -268,14 +278,7 @@ def render_plain(reader, n_cycles, times):
         exaggeration = max(1, min(5, int(round(0.25 * width / height))))
     scale = [1.0, float(exaggeration), 1.0]
 
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [WIDTH, HEIGHT]
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.OrientationAxesVisibility = 0
+    view = white_view()
 
     body = simple.Show(warp, view)
     body.Scale = scale
@@ -308,12 +311,7 @@ def render_plain(reader, n_cycles, times):
                  "(max %.3g MPa)" % pairs[-1][0])
     if exaggeration > 1:
         caption += ", vertical scale x%d" % exaggeration
-    text = simple.Text(Text=caption + "\n" + caption_2)
-    label = simple.Show(text, view)
-    label.Color = [0, 0, 0]
-    label.FontSize = 14
-    label.WindowLocation = "Upper Left Corner"
-    label.Justification = "Left"
+    show_caption(view, caption + "\n" + caption_2)
 
     # The camera frames the body and a little of the obstacle around it (after
     # the first render, which resets the camera).

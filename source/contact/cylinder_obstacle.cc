@@ -38,13 +38,7 @@ namespace signorini
     else
       {
         // On the axis every radial direction is as near: one across it.
-        unsigned int across = 0;
-        for (unsigned int d = 1; d < dim; ++d)
-          if (std::abs(axis[d]) < std::abs(axis[across]))
-            across = d;
-        normal[across] = 1.;
-        normal -= (normal * axis) * axis;
-        normal /= normal.norm();
+        normal = unit_vector_across(axis);
       }
     if (body_inside)
       {
@@ -92,14 +86,7 @@ namespace signorini
         low -= margin;
         high += margin;
         // Two unit vectors across the axis.
-        unsigned int across = 0;
-        for (unsigned int d = 1; d < dim; ++d)
-          if (std::abs(axis[d]) < std::abs(axis[across]))
-            across = d;
-        Tensor<1, dim> e1;
-        e1[across] = 1.;
-        e1 -= (e1 * axis) * axis;
-        e1 /= e1.norm();
+        const Tensor<1, dim> e1 = unit_vector_across(axis);
         const Tensor<1, dim> e2 = cross_product_3d(axis, e1);
         const unsigned int   n  = 96;
         for (const double s : {low, high})

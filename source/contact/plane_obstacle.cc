@@ -38,9 +38,8 @@ namespace signorini
   SurfaceMesh<dim>
   PlaneObstacle<dim>::surface(const BoundingBox<dim> &box) const
   {
-    // Tangents: in 2D the normal turned by 90 degrees; in 3D the first axis
-    // least aligned with the normal, made orthogonal to it, and the normal
-    // times that.
+    // Tangents: in 2D the normal turned by 90 degrees; in 3D a unit vector
+    // across the normal, and the normal times that.
     std::array<Tensor<1, dim>, dim - 1> tangents;
     if constexpr (dim == 2)
       {
@@ -49,14 +48,7 @@ namespace signorini
       }
     else
       {
-        unsigned int axis = 0;
-        for (unsigned int d = 1; d < dim; ++d)
-          if (std::abs(unit_normal[d]) < std::abs(unit_normal[axis]))
-            axis = d;
-        Tensor<1, dim> e;
-        e[axis]     = 1.;
-        tangents[0] = e - (e * unit_normal) * unit_normal;
-        tangents[0] /= tangents[0].norm();
+        tangents[0] = unit_vector_across(unit_normal);
         tangents[1] = cross_product_3d(unit_normal, tangents[0]);
       }
     // The box's corners in the tangents' coordinates.

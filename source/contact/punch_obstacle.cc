@@ -76,16 +76,8 @@ namespace signorini
       }
     else
       {
-        // Tangents: the axis least aligned with the normal, made orthogonal
-        // to it, and the normal times that.
-        unsigned int axis = 0;
-        for (unsigned int d = 1; d < dim; ++d)
-          if (std::abs(unit_normal[d]) < std::abs(unit_normal[axis]))
-            axis = d;
-        Tensor<1, dim> a;
-        a[axis] = 1.;
-        a -= (a * unit_normal) * unit_normal;
-        a /= a.norm();
+        // Tangents of the end.
+        const Tensor<1, dim> a = unit_vector_across(unit_normal);
         const Tensor<1, dim> b = cross_product_3d(unit_normal, a);
         // The end: a fan of triangles around its center; the side wall:
         // quadrilaterals between the rim and the rim moved back.

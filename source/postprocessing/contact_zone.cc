@@ -14,26 +14,6 @@ namespace signorini
 {
   using namespace dealii;
 
-  namespace
-  {
-    /** A unit vector along the contact zone of unit normal @p normal: the
-     * axis least aligned with it (the first of equals), made orthogonal to
-     * it. */
-    template <int dim>
-    Tensor<1, dim>
-    zone_tangent(const Tensor<1, dim> &normal)
-    {
-      unsigned int axis = 0;
-      for (unsigned int d = 1; d < dim; ++d)
-        if (std::abs(normal[d]) < std::abs(normal[axis]))
-          axis = d;
-      Tensor<1, dim> e;
-      e[axis]                      = 1.;
-      const Tensor<1, dim> tangent = e - (e * normal) * normal;
-      return tangent / tangent.norm();
-    }
-  } // namespace
-
   template <int dim>
   ContactZone<dim>
   evaluate_contact_zone(const Discretisation<dim>           &discretisation,
@@ -93,8 +73,9 @@ namespace signorini
         mean_normal[k] = Utilities::MPI::sum(mean_normal[k], comm);
         if (Utilities::MPI::sum(n_active[k], comm) == 0)
           continue;
-        const double         length  = mean_normal[k].norm();
-        const Tensor<1, dim> tangent = zone_tangent<dim>(
+        const double length = mean_normal[k].norm();
+        // A unit vector along the contact zone.
+        const Tensor<1, dim> tangent = unit_vector_across<dim>(
           length > 0 ? mean_normal[k] / length : mean_normal[k]);
         double low = std::numeric_limits<double>::max(), high = -low;
         for (const auto &node : nodes)

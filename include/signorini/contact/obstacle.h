@@ -7,6 +7,7 @@
 
 #include <signorini/contact/obstacle_parameters.h>
 
+#include <cmath>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -25,6 +26,25 @@ namespace signorini
     std::vector<dealii::Point<dim>>        points;
     std::vector<std::vector<unsigned int>> cells;
   };
+
+  /**
+   * A unit vector across @p direction: the coordinate axis least aligned
+   * with it (the first of equals), made orthogonal to it (a tangent of a
+   * plane of normal @p direction, a radial direction of an axis).
+   */
+  template <int dim>
+  inline dealii::Tensor<1, dim>
+  unit_vector_across(const dealii::Tensor<1, dim> &direction)
+  {
+    unsigned int axis = 0;
+    for (unsigned int d = 1; d < dim; ++d)
+      if (std::abs(direction[d]) < std::abs(direction[axis]))
+        axis = d;
+    dealii::Tensor<1, dim> across;
+    across[axis] = 1.;
+    across -= (across * direction) * direction;
+    return across / across.norm();
+  }
 
   /**
    * A rigid obstacle: for a point of the body, how far it is from the
