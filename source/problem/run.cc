@@ -97,8 +97,7 @@ namespace signorini
     check_rigid_motions_held(discretisation,
                              contact_surface.nodes(),
                              rigid_body_modes(discretisation),
-                             parameters.contact.method !=
-                               ContactParameters::Method::none);
+                             parameters.contact.acts());
     if (const auto warning =
           parameters.material.check_element(discretisation.simplex());
         !warning.empty() &&

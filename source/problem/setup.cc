@@ -35,8 +35,7 @@ namespace signorini
     , obstacle(create_obstacles(parameters.obstacle))
     , contact_surface(parameters.obstacle.contact_ids,
                       *obstacle,
-                      parameters.contact.method !=
-                        ContactParameters::Method::none)
+                      parameters.contact.acts())
     , strategy(create_contact_strategy<dim>(parameters.contact,
                                             parameters.material.young_modulus,
                                             pcout))

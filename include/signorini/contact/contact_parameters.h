@@ -49,6 +49,14 @@ namespace signorini
 
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /** Whether the obstacles act on the body at all (every method but
+     * none): what the scene checks and the contact surface ask. */
+    bool
+    acts() const
+    {
+      return method != Method::none;
+    }
   };
 } // namespace signorini
 
