@@ -29,6 +29,7 @@ namespace signorini
     data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
     data.mapping_update_flags  = update_gradients | update_JxW_values;
     matrix_free.reinit(mapping, dofs, given, QGauss<1>(2), data);
+    setup_cell_matrices();
 
     const auto &partitioner = *matrix_free.get_vector_partitioner();
     constrained.clear();
@@ -45,7 +46,9 @@ namespace signorini
   ElasticLevelOperator<dim>::clear()
   {
     matrix_free.clear();
-    constraints = nullptr;
+    cell_matrices.clear();
+    matrix_of_cell = {};
+    constraints    = nullptr;
     constrained.clear();
     identity.clear();
     held.clear();
@@ -57,7 +60,63 @@ namespace signorini
 
   template <int dim>
   void
+  ElasticLevelOperator<dim>::setup_cell_matrices()
+  {
+    static_assert(VectorizedArray<double>::size() == 1 &&
+                    sizeof(VectorizedArray<double>) == sizeof(double),
+                  "a cell batch of one cell (Debian's deal.II)");
+    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    cell_matrices.reinit(n);
+    matrix_of_cell.assign(matrix_free.n_cell_batches(), CellMatrices::none);
+    Evaluation          phi(matrix_free);
+    CellMatrices::Key   key(dim * dim);
+    std::vector<double> columns(n * n);
+    for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
+      {
+        phi.reinit(cell);
+        if (phi.get_cell_type() > internal::MatrixFreeFunctions::affine)
+          continue;
+        const auto jacobian = phi.inverse_jacobian(0);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            key[a * dim + b] = jacobian[a][b][0];
+        unsigned int index = cell_matrices.find(key);
+        if (index == CellMatrices::none)
+          {
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                for (unsigned int i = 0; i < n; ++i)
+                  phi.begin_dof_values()[i] = (i == j) ? 1. : 0.;
+                apply_at_quadrature_points(phi);
+                for (unsigned int i = 0; i < n; ++i)
+                  columns[j * n + i] = phi.begin_dof_values()[i][0];
+              }
+            index = cell_matrices.add(key, columns);
+          }
+        matrix_of_cell[cell] = index;
+      }
+  }
+
+  template <int dim>
+  void
   ElasticLevelOperator<dim>::apply_cell(Evaluation &phi) const
+  {
+    const unsigned int index = matrix_of_cell[phi.get_current_cell_index()];
+    if (index == CellMatrices::none)
+      {
+        apply_at_quadrature_points(phi);
+        return;
+      }
+    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    double                 x[n];
+    double *const          values = &phi.begin_dof_values()[0][0];
+    std::copy(values, values + n, x);
+    cell_matrices.apply(index, x, values);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::apply_at_quadrature_points(Evaluation &phi) const
   {
     phi.evaluate(EvaluationFlags::gradients);
     for (unsigned int q = 0; q < phi.n_q_points; ++q)

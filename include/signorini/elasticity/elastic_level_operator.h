@@ -10,6 +10,7 @@
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
 
+#include <signorini/elasticity/cell_matrices.h>
 #include <signorini/elasticity/material.h>
 
 #include <array>
@@ -134,9 +135,18 @@ namespace signorini
     get_dof_handler() const;
 
   private:
-    /** The stress of a cell's quadrature points, integrated. */
+    /** The cell's stiffness times its dof values (in place): its shape's
+     * matrix where it has one, else apply_at_quadrature_points(). */
     void
     apply_cell(Evaluation &phi) const;
+
+    /** The stress of a cell's quadrature points, integrated. */
+    void
+    apply_at_quadrature_points(Evaluation &phi) const;
+
+    /** The matrices of the cells with an affine mapping, one per shape. */
+    void
+    setup_cell_matrices();
 
     void
     local_apply(const dealii::MatrixFree<dim, double>       &data,
@@ -154,9 +164,14 @@ namespace signorini
     void
     compute_diagonal();
 
-    const double                             mu;
-    const double                             lambda;
-    dealii::MatrixFree<dim, double>          matrix_free;
+    const double                    mu;
+    const double                    lambda;
+    dealii::MatrixFree<dim, double> matrix_free;
+    /** The stiffness of each affine cell shape (cell batches of one cell:
+     * Debian's deal.II does not vectorise over cells). */
+    CellMatrices cell_matrices;
+    /** The matrix of each cell, or CellMatrices::none. */
+    std::vector<unsigned int>                matrix_of_cell;
     const dealii::AffineConstraints<double> *constraints = nullptr;
     /** Locally owned constrained dofs (local indices). */
     std::vector<unsigned int> constrained;

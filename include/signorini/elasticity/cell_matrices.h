@@ -1,0 +1,68 @@
+#ifndef signorini_elasticity_cell_matrices_h
+#define signorini_elasticity_cell_matrices_h
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <vector>
+
+namespace signorini
+{
+  /**
+   * The dense stiffness matrices of the distinct cell shapes of a mesh, for
+   * the cells whose mapping is affine (a box or a parallelepiped): one
+   * matrix for all cells of one shape, found by the cell's inverse Jacobian.
+   * On a Kelly-refined box mesh that is one matrix per refinement level,
+   * and applying one (n x n, n = 24 for a hexahedron) is a few dozen fused
+   * multiply-adds on the wide registers the processor has (AVX-512, AVX2
+   * or SSE2, chosen when the program starts), where evaluating the cell at
+   * its quadrature points is a few thousand scalar operations.
+   */
+  class CellMatrices
+  {
+  public:
+    /** The key of a shape: the inverse Jacobian's entries (row by row). */
+    using Key = std::vector<double>;
+
+    static constexpr unsigned int none = static_cast<unsigned int>(-1);
+
+    /** Empty, for matrices of size @p n (8 in 2D, 24 in 3D). */
+    void
+    reinit(const unsigned int n);
+
+    void
+    clear();
+
+    /** The matrix of @p key, or `none`. */
+    unsigned int
+    find(const Key &key) const;
+
+    /** Stores @p columns (n columns of n entries) as the matrix of @p key,
+     * unless there are already `max_matrices`; returns its index or `none`. */
+    unsigned int
+    add(const Key &key, const std::vector<double> &columns);
+
+    /** y = K_index x (x and y of size n, not overlapping). */
+    void
+    apply(const unsigned int index, const double *x, double *y) const;
+
+    /** The number of matrices. */
+    unsigned int
+    size() const;
+
+    /** The memory held [bytes]. */
+    std::size_t
+    memory_consumption() const;
+
+    /** More distinct shapes than this (a distorted mesh) are evaluated at
+     * quadrature points instead. */
+    static constexpr unsigned int max_matrices = 512;
+
+  private:
+    unsigned int                n = 0;
+    std::map<Key, unsigned int> index_of;
+    std::vector<double>         entries;
+  };
+} // namespace signorini
+
+#endif

@@ -1,0 +1,126 @@
+#include <signorini/elasticity/cell_matrices.h>
+
+#include <algorithm>
+
+namespace signorini
+{
+  namespace
+  {
+// One copy of each kernel per instruction set, chosen by the processor the
+// program runs on (GCC's function multi-versioning): Debian's deal.II is
+// compiled for the baseline x86-64, whose registers hold two doubles.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#  define SIGNORINI_WIDE_KERNEL \
+    __attribute__((target_clones("avx512f", "arch=haswell", "default")))
+#else
+#  define SIGNORINI_WIDE_KERNEL
+#endif
+
+    /** y = K x, K stored by columns: a column's n entries times x_j. */
+    template <unsigned int n>
+    inline void
+    apply_columns(const double *__restrict K,
+                  const double *__restrict x,
+                  double *__restrict y)
+    {
+      double sum[n];
+      for (unsigned int i = 0; i < n; ++i)
+        sum[i] = K[i] * x[0];
+      for (unsigned int j = 1; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          sum[i] += K[j * n + i] * x[j];
+      for (unsigned int i = 0; i < n; ++i)
+        y[i] = sum[i];
+    }
+
+    SIGNORINI_WIDE_KERNEL void
+    apply_quadrilateral(const double *__restrict K,
+                        const double *__restrict x,
+                        double *__restrict y)
+    {
+      apply_columns<8>(K, x, y);
+    }
+
+    SIGNORINI_WIDE_KERNEL void
+    apply_hexahedron(const double *__restrict K,
+                     const double *__restrict x,
+                     double *__restrict y)
+    {
+      apply_columns<24>(K, x, y);
+    }
+
+    void
+    apply_any(const unsigned int n,
+              const double *__restrict K,
+              const double *__restrict x,
+              double *__restrict y)
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        y[i] = 0.;
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          y[i] += K[j * n + i] * x[j];
+    }
+#undef SIGNORINI_WIDE_KERNEL
+  } // namespace
+
+  void
+  CellMatrices::reinit(const unsigned int size)
+  {
+    clear();
+    n = size;
+  }
+
+  void
+  CellMatrices::clear()
+  {
+    index_of.clear();
+    entries.clear();
+    entries.shrink_to_fit();
+  }
+
+  unsigned int
+  CellMatrices::find(const Key &key) const
+  {
+    const auto found = index_of.find(key);
+    return found == index_of.end() ? none : found->second;
+  }
+
+  unsigned int
+  CellMatrices::add(const Key &key, const std::vector<double> &columns)
+  {
+    if (index_of.size() >= max_matrices)
+      return none;
+    const unsigned int index = index_of.size();
+    index_of.emplace(key, index);
+    entries.insert(entries.end(), columns.begin(), columns.end());
+    return index;
+  }
+
+  void
+  CellMatrices::apply(const unsigned int index,
+                      const double      *x,
+                      double            *y) const
+  {
+    const double *K = entries.data() + std::size_t(index) * n * n;
+    if (n == 24)
+      apply_hexahedron(K, x, y);
+    else if (n == 8)
+      apply_quadrilateral(K, x, y);
+    else
+      apply_any(n, K, x, y);
+  }
+
+  unsigned int
+  CellMatrices::size() const
+  {
+    return index_of.size();
+  }
+
+  std::size_t
+  CellMatrices::memory_consumption() const
+  {
+    return entries.size() * sizeof(double) +
+           index_of.size() * (sizeof(Key) + n * sizeof(double) + 64);
+  }
+} // namespace signorini
