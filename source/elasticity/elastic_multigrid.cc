@@ -3,6 +3,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <signorini/base/failures.h>
+#include <signorini/elasticity/coarsening_sequence.h>
 #include <signorini/elasticity/elastic_multigrid.h>
 
 namespace signorini
@@ -109,10 +110,8 @@ namespace signorini
   {
     clear();
     const auto &fine_dofs = fine->get_dof_handler();
-    meshes =
-      MGTransferGlobalCoarseningTools::create_geometric_coarsening_sequence(
-        fine_dofs.get_triangulation());
-    // The finest is the fine operator's own mesh (a copy here: dropped).
+    meshes                = coarsening_sequence(fine_dofs.get_triangulation());
+    // The finest is the fine operator's own mesh (a reference: dropped).
     meshes.back().reset();
     const unsigned int top = meshes.size() - 1;
 
