@@ -66,8 +66,8 @@ namespace signorini
     coarse_matrix.clear();
     smoother.clear();
     mg_matrix.reset();
-    transfer.reset();
-    transfers.resize(0, 0);
+    transfer.clear();
+    transfer_ready = false;
     operators.resize(0, 0);
     constraints.resize(0, 0);
     dofs.clear();
@@ -78,7 +78,7 @@ namespace signorini
   bool
   ElasticMultigrid<dim>::ready() const
   {
-    return transfer != nullptr;
+    return transfer_ready;
   }
 
   template <int dim>
@@ -117,7 +117,6 @@ namespace signorini
 
     constraints.resize(0, top);
     operators.resize(0, top);
-    transfers.resize(0, top);
     for (unsigned int level = 0; level < top; ++level)
       {
         dofs.push_back(std::make_unique<DoFHandler<dim>>(*meshes[level]));
@@ -142,16 +141,21 @@ namespace signorini
       }
     operators[top] = fine;
 
+    std::vector<const DoFHandler<dim> *>           level_dofs;
+    std::vector<const AffineConstraints<double> *> level_constraints;
     for (unsigned int level = 0; level < top; ++level)
-      transfers[level + 1].reinit_geometric_transfer(
-        level + 1 == top ? fine_dofs : *dofs[level + 1],
-        *dofs[level],
-        level + 1 == top ? fine_constraints : constraints[level + 1],
-        constraints[level]);
-    transfer = std::make_unique<MGTransferGlobalCoarsening<dim, VectorType>>(
-      transfers, [this](const unsigned int level, VectorType &vector) {
-        operators[level]->initialize_dof_vector(vector);
-      });
+      {
+        level_dofs.push_back(dofs[level].get());
+        level_constraints.push_back(&constraints[level]);
+      }
+    level_dofs.push_back(&fine_dofs);
+    level_constraints.push_back(&fine_constraints);
+    transfer.reinit(level_dofs,
+                    level_constraints,
+                    [this](const unsigned int level, VectorType &vector) {
+                      operators[level]->initialize_dof_vector(vector);
+                    });
+    transfer_ready = true;
   }
 
   template <int dim>
@@ -170,8 +174,8 @@ namespace signorini
         VectorType level_diagonal, level_off;
         operators[level]->initialize_dof_vector(level_diagonal);
         operators[level]->initialize_dof_vector(level_off);
-        transfers[level + 1].restrict_and_add(level_diagonal, finer_diagonal);
-        transfers[level + 1].restrict_and_add(level_off, finer_off);
+        transfer.restrict_and_add(level + 1, level_diagonal, finer_diagonal);
+        transfer.restrict_and_add(level + 1, level_off, finer_off);
 
         // The owned dofs come as whole vertices, dim at a time.
         std::vector<typename LevelOperator::NodalBlock> blocks;
@@ -235,12 +239,10 @@ namespace signorini
     smoother.initialize(operators, data);
     mg_matrix.initialize(operators);
     multigrid = std::make_unique<Multigrid<VectorType>>(
-      mg_matrix, *coarse, *transfer, smoother, smoother);
-    preconditioner = std::make_unique<
-      PreconditionMG<dim,
-                     VectorType,
-                     MGTransferGlobalCoarsening<dim, VectorType>>>(
-      operators[top]->get_dof_handler(), *multigrid, *transfer);
+      mg_matrix, *coarse, transfer, smoother, smoother);
+    preconditioner =
+      std::make_unique<PreconditionMG<dim, VectorType, LevelTransfer<dim>>>(
+        operators[top]->get_dof_handler(), *multigrid, transfer);
   }
 
   template <int dim>

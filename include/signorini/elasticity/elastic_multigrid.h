@@ -13,6 +13,7 @@
 #include <deal.II/multigrid/multigrid.h>
 
 #include <signorini/elasticity/elastic_level_operator.h>
+#include <signorini/elasticity/level_transfer.h>
 
 #include <memory>
 #include <utility>
@@ -21,9 +22,9 @@
 namespace signorini
 {
   /**
-   * Geometric multigrid for ElasticLevelOperator by global coarsening
-   * (deal.II's MGTransferGlobalCoarsening): the levels are the fine mesh
-   * coarsened once, twice, ... down to the coarse mesh, each with its
+   * Geometric multigrid for ElasticLevelOperator by global coarsening: the
+   * levels are the fine mesh coarsened once, twice, ... down to the coarse
+   * mesh (coarsening_sequence), connected by LevelTransfer, each with its
    * hanging nodes and the homogeneous Dirichlet data. Chebyshev smoothing
    * (degree 3) on the inverse diagonal; the coarsest level solved directly
    * (Trilinos Amesos KLU) on its assembled matrix.
@@ -96,10 +97,8 @@ namespace signorini
     std::vector<std::unique_ptr<dealii::DoFHandler<dim>>>          dofs;
     dealii::MGLevelObject<dealii::AffineConstraints<double>>       constraints;
     dealii::MGLevelObject<std::shared_ptr<LevelOperator>>          operators;
-    dealii::MGLevelObject<dealii::MGTwoLevelTransfer<dim, VectorType>>
-      transfers;
-    std::unique_ptr<dealii::MGTransferGlobalCoarsening<dim, VectorType>>
-                                   transfer;
+    LevelTransfer<dim>                                             transfer;
+    bool                           transfer_ready = false;
     dealii::mg::Matrix<VectorType> mg_matrix;
     dealii::MGSmootherPrecondition<LevelOperator, Smoother, VectorType>
                                                             smoother;
@@ -108,10 +107,7 @@ namespace signorini
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
     std::unique_ptr<dealii::MGCoarseGridBase<VectorType>>   coarse;
     std::unique_ptr<dealii::Multigrid<VectorType>>          multigrid;
-    std::unique_ptr<dealii::PreconditionMG<
-      dim,
-      VectorType,
-      dealii::MGTransferGlobalCoarsening<dim, VectorType>>>
+    std::unique_ptr<dealii::PreconditionMG<dim, VectorType, LevelTransfer<dim>>>
       preconditioner;
   };
 } // namespace signorini
