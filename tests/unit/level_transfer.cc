@@ -1,9 +1,11 @@
-// The multigrid's meshes and transfer on one process: coarsening_sequence
-// gives the same meshes as deal.II's create_geometric_coarsening_sequence
-// (cells per level) on a cube refined locally with hanging nodes; and
-// LevelTransfer between each pair of levels carries a linear field (zero on
-// the clamped face) exactly, zero at the constrained dofs, with its
-// restriction the transpose of its prolongation: (P x, y) = (x, R y).
+// The multigrid's meshes and transfer, on one process and on two (where
+// most coarse cells of a process's finer cells are another's):
+// coarsening_sequence gives the same meshes as deal.II's
+// create_geometric_coarsening_sequence (cells per level) on a cube refined
+// locally with hanging nodes; and LevelTransfer between each pair of levels
+// carries a linear field (zero on the clamped face) exactly, zero at the
+// constrained dofs, with its restriction the transpose of its prolongation: (P
+// x, y) = (x, R y).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -33,12 +35,19 @@ namespace
 {
   using VectorType = LinearAlgebra::distributed::Vector<double>;
 
+  bool
+  first_process()
+  {
+    return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  }
+
   void
   report(const std::string &what, const double difference, const double tol)
   {
-    std::cout << "  " << what << ": " << std::scientific
-              << std::setprecision(1) << difference
-              << (difference <= tol ? "  (ok)" : "  (FAILED)") << '\n';
+    if (first_process())
+      std::cout << "  " << what << ": " << std::scientific
+                << std::setprecision(1) << difference
+                << (difference <= tol ? "  (ok)" : "  (FAILED)") << '\n';
   }
 
   /** u = x (1, 2, 3): linear, zero on the face x = 0. */
@@ -47,7 +56,8 @@ namespace
   public:
     Linear()
       : Function<3>(3)
-    {}
+    {
+    }
     double
     value(const Point<3> &p, const unsigned int component) const override
     {
@@ -59,7 +69,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  Utilities::MPI::MPI_InitFinalize        mpi(argc, argv, 1);
   parallel::distributed::Triangulation<3> mesh(MPI_COMM_WORLD);
   GridGenerator::hyper_cube(mesh, 0., 1., true);
   mesh.refine_global(1);
@@ -72,32 +82,38 @@ main(int argc, char **argv)
       mesh.execute_coarsening_and_refinement();
     }
 
-  const auto ours   = coarsening_sequence(mesh);
-  const auto dealii = MGTransferGlobalCoarseningTools::
-    create_geometric_coarsening_sequence(mesh);
-  std::cout << "levels: " << ours.size() << " (deal.II " << dealii.size()
-            << ")\n";
+  const auto ours = coarsening_sequence(mesh);
+  const auto dealii =
+    MGTransferGlobalCoarseningTools::create_geometric_coarsening_sequence(mesh);
+  if (first_process())
+    std::cout << "levels: " << ours.size() << " (deal.II " << dealii.size()
+              << ")\n";
   bool same = ours.size() == dealii.size();
   for (unsigned int level = 0; same && level < ours.size(); ++level)
     {
-      std::cout << "  level " << level << ": "
-                << ours[level]->n_global_active_cells() << " cells\n";
+      if (first_process())
+        std::cout << "  level " << level << ": "
+                  << ours[level]->n_global_active_cells() << " cells\n";
       same = ours[level]->n_global_active_cells() ==
              dealii[level]->n_global_active_cells();
     }
-  std::cout << "  same cells per level as deal.II: " << (same ? "yes" : "no")
-            << '\n';
+  if (first_process())
+    std::cout << "  same cells per level as deal.II: " << (same ? "yes" : "no")
+              << '\n';
 
-  const FESystem<3>                                  fe(FE_Q<3>(1), 3);
-  std::vector<std::unique_ptr<DoFHandler<3>>>        dofs;
+  const FESystem<3>                                       fe(FE_Q<3>(1), 3);
+  std::vector<std::unique_ptr<DoFHandler<3>>>             dofs;
   std::vector<std::unique_ptr<AffineConstraints<double>>> constraints;
-  std::vector<const DoFHandler<3> *>                 dof_pointers;
-  std::vector<const AffineConstraints<double> *>     constraint_pointers;
+  std::vector<const DoFHandler<3> *>                      dof_pointers;
+  std::vector<const AffineConstraints<double> *>          constraint_pointers;
   for (const auto &level_mesh : ours)
     {
       dofs.push_back(std::make_unique<DoFHandler<3>>(*level_mesh));
       dofs.back()->distribute_dofs(fe);
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(*dofs.back(), relevant);
       constraints.push_back(std::make_unique<AffineConstraints<double>>());
+      constraints.back()->reinit(relevant);
       DoFTools::make_hanging_node_constraints(*dofs.back(),
                                               *constraints.back());
       VectorTools::interpolate_boundary_values(*dofs.back(),
@@ -111,6 +127,17 @@ main(int argc, char **argv)
   const auto initialize = [&](const unsigned int level, VectorType &vector) {
     vector.reinit(dofs[level]->locally_owned_dofs(), MPI_COMM_WORLD);
   };
+  // The linear field at every dof (interpolated on a vector with the
+  // locally relevant dofs, which deal.II's interpolation writes to).
+  const auto interpolate_linear = [&](const unsigned int level, VectorType &v) {
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(*dofs[level], relevant);
+    VectorType with_ghosts(dofs[level]->locally_owned_dofs(),
+                           relevant,
+                           MPI_COMM_WORLD);
+    VectorTools::interpolate(*dofs[level], Linear(), with_ghosts);
+    v.copy_locally_owned_data_from(with_ghosts);
+  };
   LevelTransfer<3> transfer;
   transfer.reinit(dof_pointers, constraint_pointers, initialize);
 
@@ -121,21 +148,24 @@ main(int argc, char **argv)
     for (auto &entry : v)
       entry = uniform(random);
     for (const auto &line : constraints[level]->get_lines())
-      v(line.index) = 0.;
+      if (v.in_local_range(line.index))
+        v(line.index) = 0.;
   };
   for (unsigned int level = 1; level < ours.size(); ++level)
     {
-      std::cout << "levels " << level - 1 << " -> " << level << " ("
-                << dofs[level - 1]->n_dofs() << " -> "
-                << dofs[level]->n_dofs() << " dofs)\n";
+      if (first_process())
+        std::cout << "levels " << level - 1 << " -> " << level << " ("
+                  << dofs[level - 1]->n_dofs() << " -> "
+                  << dofs[level]->n_dofs() << " dofs)\n";
       VectorType coarse, fine, exact;
       initialize(level - 1, coarse);
       initialize(level, fine);
       initialize(level, exact);
-      VectorTools::interpolate(*dofs[level - 1], Linear(), coarse);
-      VectorTools::interpolate(*dofs[level], Linear(), exact);
+      interpolate_linear(level - 1, coarse);
+      interpolate_linear(level, exact);
       for (const auto &line : constraints[level]->get_lines())
-        exact(line.index) = 0.;
+        if (exact.in_local_range(line.index))
+          exact(line.index) = 0.;
       transfer.prolongate(level, fine, coarse);
       fine -= exact;
       report("linear field, max difference", fine.linfty_norm(), 1e-14);

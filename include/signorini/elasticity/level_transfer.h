@@ -1,11 +1,11 @@
 #ifndef signorini_elasticity_level_transfer_h
 #define signorini_elasticity_level_transfer_h
 
+#include <deal.II/base/mg_level_object.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/multigrid/mg_base.h>
-#include <deal.II/base/mg_level_object.h>
 #include <deal.II/multigrid/mg_transfer_global_coarsening.h>
 
 #include <signorini/elasticity/cell_matrices.h>
@@ -18,23 +18,25 @@ namespace signorini
 {
   /**
    * The transfer between the levels of ElasticMultigrid, meshes each
-   * refining the one below it at most once (coarsening_sequence).
+   * refining the one below it at most once (coarsening_sequence), done cell
+   * by cell: a coarse cell is either a cell of the finer mesh or the parent
+   * of its children there, and the finer values are the coarse cell's
+   * interpolated by the element's embedding matrices (its hanging nodes and
+   * Dirichlet dofs resolved first, the finer level's constrained dofs
+   * zero); restriction is the transpose. Each process handles the finer
+   * cells it owns; the coarse cells it does not have (the two meshes are
+   * partitioned each on its own) are asked of their owners once, at
+   * setup.
    *
-   * On one process it is done here cell by cell: a coarse cell is either a
-   * cell of the finer mesh or the parent of its children there, and the
-   * finer values are the coarse cell's interpolated by the element's
-   * embedding matrices (its hanging nodes and Dirichlet dofs resolved
-   * first, the finer level's constrained dofs zero); restriction is the
-   * transpose. On more processes, deal.II's MGTwoLevelTransfer, which
-   * finds the coarse cells of other processes through a table over every
-   * cell the mesh's levels could have: 4 bytes times 8^L for L levels, 537
-   * MB at 9 levels (sphere_indentation at 493,287 dofs) and 4.3 GB at 10,
-   * while the transfer here holds 48 indices per finer cell.
+   * It replaces deal.II's MGTwoLevelTransfer, which finds the coarse cells
+   * through a table over every cell the mesh's levels could have: 4 bytes
+   * times 8^L for L levels, 537 MB at 9 levels (sphere_indentation at
+   * 493,287 dofs) and 4.3 GB at 10, where this one holds 48 indices per
+   * finer cell. deal.II's is kept for meshes that are not nested so.
    */
   template <int dim>
-  class LevelTransfer
-    : public dealii::MGTransferBase<
-        dealii::LinearAlgebra::distributed::Vector<double>>
+  class LevelTransfer : public dealii::MGTransferBase<
+                          dealii::LinearAlgebra::distributed::Vector<double>>
   {
   public:
     using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
@@ -42,10 +44,10 @@ namespace signorini
     /** Levels 0 (coarsest) to dofs.size() - 1 with their constraints and
      * how to make a vector of a level. */
     void
-    reinit(const std::vector<const dealii::DoFHandler<dim> *>           &dofs,
-           const std::vector<const dealii::AffineConstraints<double> *> &constraints,
-           const std::function<void(const unsigned int, VectorType &)>
-             &initialize);
+    reinit(
+      const std::vector<const dealii::DoFHandler<dim> *>           &dofs,
+      const std::vector<const dealii::AffineConstraints<double> *> &constraints,
+      const std::function<void(const unsigned int, VectorType &)>  &initialize);
 
     void
     clear();
@@ -63,9 +65,9 @@ namespace signorini
     /** The fine vector to the top level; the others zero. */
     template <class InVector>
     void
-    copy_to_mg(const dealii::DoFHandler<dim>      &,
+    copy_to_mg(const dealii::DoFHandler<dim> &,
                dealii::MGLevelObject<VectorType> &dst,
-               const InVector                     &src) const
+               const InVector                    &src) const
     {
       for (unsigned int level = dst.min_level(); level <= dst.max_level();
            ++level)
@@ -81,7 +83,7 @@ namespace signorini
     /** The top level to the fine vector. */
     template <class OutVector>
     void
-    copy_from_mg(const dealii::DoFHandler<dim>           &,
+    copy_from_mg(const dealii::DoFHandler<dim> &,
                  OutVector                               &dst,
                  const dealii::MGLevelObject<VectorType> &src) const
     {
@@ -89,22 +91,32 @@ namespace signorini
     }
 
   private:
-    /** One level and the one below it, cell by cell (one process). */
+    /** One level and the one below it, cell by cell. */
     struct CellwisePair
     {
-      /** Per finer cell: its dofs, the coarse cell's, and which embedding
-       * (a child number, or `identity`). */
+      /** Per owned finer cell: its dofs (local indices, `none` where not
+       * owned here), the coarse cell's (local indices of coarse_values),
+       * and which embedding (a child number, or `identity`). */
       std::vector<unsigned int> fine_dofs;
       std::vector<unsigned int> coarse_dofs;
       std::vector<unsigned int> embedding;
-      /** 1 / the number of finer cells at a dof; 0 at constrained dofs. */
-      std::vector<double>                      fine_weights;
-      std::vector<unsigned int>                fine_constrained;
-      const dealii::AffineConstraints<double> *coarse_constraints = nullptr;
-      mutable VectorType                       coarse_values;
+      /** 1 / the number of owned finer cells at an owned dof; 0 at
+       * constrained dofs. */
+      std::vector<double>       fine_weights;
+      std::vector<unsigned int> fine_constrained;
+      /** The coarse level's constraints of its owned dofs (local indices):
+       * a dof and its masters. */
+      std::vector<
+        std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
+        coarse_lines;
+      /** The coarse level's values at its owned dofs and at the dofs of
+       * the coarse cells of the owned finer cells. */
+      mutable VectorType coarse_values;
     };
 
-    void
+    /** Sets up cellwise[level]; false if a coarse cell is missing or not
+     * the finer cell or its parent (on any process). */
+    bool
     setup_pair(const unsigned int                       level,
                const dealii::DoFHandler<dim>           &coarse,
                const dealii::DoFHandler<dim>           &fine,
@@ -112,13 +124,15 @@ namespace signorini
                const dealii::AffineConstraints<double> &fine_constraints);
 
     static constexpr unsigned int identity = static_cast<unsigned int>(-1);
+    static constexpr unsigned int none     = static_cast<unsigned int>(-1);
 
     std::function<void(const unsigned int, VectorType &)> initialize;
     /** Indexed by the finer level. */
     std::vector<CellwisePair> cellwise;
     dealii::MGLevelObject<dealii::MGTwoLevelTransfer<dim, VectorType>>
       distributed;
-    bool on_one_process = true;
+    /** Whether deal.II's transfer is used. */
+    bool by_dealii = false;
     /** The embeddings (child c) and their transposes (child c +
      * children per cell). */
     CellMatrices embeddings;
