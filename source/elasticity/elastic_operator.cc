@@ -1,4 +1,5 @@
 #include <signorini/elasticity/assembled_operator.h>
+#include <signorini/elasticity/automatic_operator.h>
 #include <signorini/elasticity/matrix_free_operator.h>
 
 namespace signorini
@@ -17,18 +18,35 @@ namespace signorini
                           ConditionalOStream            &pcout,
                           TimerOutput                   &timer)
   {
-    if (parameters.type == LinearSolverParameters::Type::matrix_free)
-      return std::make_unique<MatrixFreeOperator<dim>>(discretisation,
-                                                       material,
-                                                       boundary_conditions,
-                                                       loads,
-                                                       parameters,
-                                                       remedies,
-                                                       verbose,
-                                                       pcout,
-                                                       timer);
-    return std::make_unique<AssembledOperator<dim>>(
-      discretisation, material, loads, parameters, remedies, pcout, timer);
+    const auto make =
+      [&, remedies, verbose](
+        const bool matrix_free) -> std::unique_ptr<ElasticOperator<dim>> {
+      if (matrix_free)
+        return std::make_unique<MatrixFreeOperator<dim>>(discretisation,
+                                                         material,
+                                                         boundary_conditions,
+                                                         loads,
+                                                         parameters,
+                                                         remedies,
+                                                         verbose,
+                                                         pcout,
+                                                         timer);
+      return std::make_unique<AssembledOperator<dim>>(
+        discretisation, material, loads, parameters, remedies, pcout, timer);
+    };
+    switch (parameters.type)
+      {
+        case LinearSolverParameters::Type::matrix_free:
+          return make(true);
+        case LinearSolverParameters::Type::automatic:
+          return std::make_unique<AutomaticOperator<dim>>(
+            discretisation,
+            !material.axisymmetric() &&
+              !material.template mean_dilatation<dim>(false),
+            make);
+        default:
+          return make(false);
+      }
   }
 
   template std::unique_ptr<ElasticOperator<2>>

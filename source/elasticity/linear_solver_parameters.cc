@@ -27,9 +27,11 @@ namespace signorini
                       solver_types.pattern(),
                       "direct: sparse LU (Trilinos Amesos MUMPS); amg cg: "
                       "conjugate gradients with algebraic multigrid (Trilinos "
-                      "ML); automatic: direct in 2D on one process, amg cg "
-                      "in 3D and on several processes, the faster choice as "
-                      "measured (see README); matrix-free: no matrix, the "
+                      "ML); automatic: matrix-free on hexahedra in 3D (the "
+                      "volumetric strain at every point), else direct in 2D "
+                      "on one process below 100,000 dofs and amg cg above, "
+                      "in 3D and on several processes, the faster choices "
+                      "as measured (see README); matrix-free: no matrix, the "
                       "elastic operator evaluated cell by cell and CG with "
                       "geometric multigrid (quadrilaterals and hexahedra, "
                       "not axisymmetric, volumetric strain pointwise; "
@@ -77,11 +79,15 @@ namespace signorini
   }
 
   LinearSolverParameters::Type
-  LinearSolverParameters::resolved_type(const unsigned int dim,
-                                        const unsigned int n_processes) const
+  LinearSolverParameters::resolved_type(
+    const unsigned int            dim,
+    const unsigned int            n_processes,
+    const types::global_dof_index n_dofs) const
   {
     if (type != Type::automatic && type != Type::matrix_free)
       return type;
-    return dim == 2 && n_processes == 1 ? Type::direct : Type::amg_cg;
+    return dim == 2 && n_processes == 1 && n_dofs < direct_below ?
+             Type::direct :
+             Type::amg_cg;
   }
 } // namespace signorini

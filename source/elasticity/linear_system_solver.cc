@@ -268,10 +268,10 @@ namespace signorini
                             const unsigned int                    components,
                             const double relative_tolerance)
   {
-    if (parameters.resolved_type(components,
-                                 Utilities::MPI::n_mpi_processes(
-                                   matrix.get_mpi_communicator())) ==
-        LinearSolverParameters::Type::direct)
+    if (parameters.resolved_type(
+          components,
+          Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator()),
+          matrix.m()) == LinearSolverParameters::Type::direct)
       {
         solve_direct(matrix, solution, rhs);
         return 1;

@@ -1,0 +1,71 @@
+#ifndef signorini_elasticity_automatic_operator_h
+#define signorini_elasticity_automatic_operator_h
+
+#include <signorini/elasticity/elastic_operator.h>
+
+#include <functional>
+#include <memory>
+
+namespace signorini
+{
+  template <int dim>
+  class Discretisation;
+
+  /**
+   * `Linear solver/Type = automatic`: the elastic operator that measured
+   * fastest for the mesh, chosen at the first reinit(), when the mesh is
+   * known. MatrixFreeOperator on hexahedra in 3D with the volumetric strain
+   * taken at every point: it solved faster than the assembled operator on
+   * every mesh of sphere_indentation (2,187 to 493,287 dofs, one and two
+   * processes) and held half its memory. AssembledOperator otherwise: in 2D
+   * (the assembled solvers took half the matrix-free time on the 2D Hertz
+   * scene at every size), on tetrahedra, and with the cell mean of the
+   * volumetric strain, which the matrix-free operator does not evaluate.
+   */
+  template <int dim>
+  class AutomaticOperator : public ElasticOperator<dim>
+  {
+  public:
+    using VectorType = typename ElasticOperator<dim>::VectorType;
+    using Factory =
+      std::function<std::unique_ptr<ElasticOperator<dim>>(bool matrix_free)>;
+
+    /** @p make builds the matrix-free (true) or the assembled operator;
+     * @p pointwise: whether the volumetric strain is taken at every
+     * point. */
+    AutomaticOperator(const Discretisation<dim> &discretisation,
+                      const bool                 pointwise,
+                      Factory                    make);
+
+    void
+    reinit() override;
+
+    void
+    assemble_load() override;
+
+    const VectorType &
+    load() const override;
+
+    void
+    residual(const VectorType &u, VectorType &residual) override;
+
+    void
+    solve(const ContactLinearisation<dim> &linearisation,
+          VectorType                      &u,
+          const bool                       final_step) override;
+
+    void
+    invalidate() override;
+
+    void
+    release() override;
+
+  private:
+    const Discretisation<dim>           &discretisation;
+    const bool                           pointwise;
+    Factory                              make;
+    std::unique_ptr<ElasticOperator<dim>> chosen;
+  };
+} // namespace signorini
+
+#endif
