@@ -62,21 +62,17 @@ def elastic_operator(overrides):
     """The elastic operator a case runs: matrix-free or assembled."""
     chosen = overrides.get("Linear solver", {}).get("Type", "")
     return "matrix-free" if chosen == "matrix-free" else "assembled"
-# The indentation scene refined to at least a million dofs.
+# The indentation scene refined to more than 1.4 million dofs.
 LARGE = {"Mesh refinement": {"Number of cycles": "7"}}
 # The 2D Hertz scene at more than 200k dofs.
 HERTZ_2D = {"Mesh refinement": {"Number of cycles": "12"}}
 STEP42 = "/usr/share/doc/libdeal.ii-doc/examples/step-42"
 
 
-def measure(name, scene, overrides, repeat, processes=0):
-    """Per cycle: dofs, iterations and the medians over `repeat` runs of the
-    contact solve, the linear solve, their ratio and the peak memory."""
-    settings = dict(overrides)
-    settings["Output"] = {"Timing table": "true"}
-    runs = [common.run(WORK, name, scene, settings,
-                       processes=processes).timings
-            for _ in range(repeat)]
+def median_rows(runs):
+    """Per cycle of the runs' timing tables: dofs, iterations and the
+    medians of the contact solve, the linear solve, their ratio and the
+    peak memory."""
     rows = []
     for cycle in range(len(runs[0])):
         samples = [r[cycle] for r in runs]
@@ -89,30 +85,68 @@ def measure(name, scene, overrides, repeat, processes=0):
     return rows
 
 
+def measure(name, scene, overrides, repeat, processes=0):
+    """Per cycle: dofs, iterations and the medians over `repeat` runs of the
+    contact solve, the linear solve, their ratio and the peak memory."""
+    return measure_in_turn([(name, scene, overrides, processes)],
+                           repeat)[name]
+
+
+def measure_in_turn(cases, repeat):
+    """measure() for each of `cases` (name, scene, overrides, processes),
+    the cases run in turn `repeat` times, so that the machine's drift meets
+    each alike; per case name the rows."""
+    runs = {case[0]: [] for case in cases}
+    for _ in range(repeat):
+        for name, scene, overrides, processes in cases:
+            settings = dict(overrides)
+            settings["Output"] = {"Timing table": "true"}
+            runs[name].append(common.run(WORK, name, scene, settings,
+                                         processes=processes).timings)
+    return {name: median_rows(r) for name, r in runs.items()}
+
+
 def whole_runs(name, scene, overrides, repeat, processes,
                long_run=float("inf")):
-    """Medians over `repeat` runs (one if it takes `long_run` seconds) of the whole run as a user runs it (output
-    included, no timing table): wall time of the process [s], the share of
-    the run spent writing output, peak memory [MB] and per dof [kB], and
-    the final dofs."""
-    settings = dict(overrides)
-    settings["Output"] = {"Print timings": "true"}
-    runs = [common.run(WORK, name, scene, settings, processes=processes)]
-    while len(runs) < repeat and runs[0].wall < long_run:
-        runs.append(common.run(WORK, name, scene, settings,
-                               processes=processes))
-    dofs = runs[0].rows[-1]["dofs"]
+    """Medians over `repeat` runs (one if it takes `long_run` seconds) of
+    the whole run as a user runs it (output included, no timing table):
+    wall time of the process [s], the share of the run spent writing
+    output, peak memory [MB] and per dof [kB], and the final dofs."""
+    return whole_runs_in_turn([(name, scene, overrides, processes)], repeat,
+                              long_run)[name]
+
+
+def whole_runs_in_turn(cases, repeat, long_run=float("inf"), between=None):
+    """whole_runs() for each of `cases` (name, scene, overrides,
+    processes), run in turn `repeat` times; `between`, if given, is called
+    once per turn before the cases (another program timed alike)."""
+    runs = {case[0]: [] for case in cases}
+    for turn in range(repeat):
+        if between:
+            between()
+        for name, scene, overrides, processes in cases:
+            if turn and runs[name][0].wall >= long_run:
+                continue
+            settings = dict(overrides)
+            settings["Output"] = {"Print timings": "true"}
+            runs[name].append(common.run(WORK, name, scene, settings,
+                                         processes=processes))
     median = statistics.median
-    return {
-        "wall": median(r.wall for r in runs),
-        "output": median(r.timer["Output"] / r.timer["Total"] for r in runs),
-        "checkpoint": median(r.timer.get("Output: checkpoint", 0.) /
-                             r.timer["Total"] for r in runs),
-        "memory": median(r.peak_memory for r in runs),
-        "per_dof": median(r.peak_memory * 1024. / dofs for r in runs),
-        "dofs": dofs,
-        "force": runs[0].rows[-1].get("contact_force_z", float("nan")),
-    }
+    result = {}
+    for name, done in runs.items():
+        dofs = done[0].rows[-1]["dofs"]
+        result[name] = {
+            "wall": median(r.wall for r in done),
+            "output": median(r.timer["Output"] / r.timer["Total"]
+                             for r in done),
+            "checkpoint": median(r.timer.get("Output: checkpoint", 0.) /
+                                 r.timer["Total"] for r in done),
+            "memory": median(r.peak_memory for r in done),
+            "per_dof": median(r.peak_memory * 1024. / dofs for r in done),
+            "dofs": dofs,
+            "force": done[0].rows[-1].get("contact_force_z", float("nan")),
+        }
+    return result
 
 
 def build_step42():
@@ -149,72 +183,120 @@ def build_step42():
     return folder
 
 
-def run_step42(folder, repeat):
-    """Median wall time of step-42 on two processes, and its last contact
-    force."""
+def run_step42(folder):
+    """One run of step-42 on two processes: its wall time and its last
+    contact force."""
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_btl_vader_single_copy_mechanism="none")
-    walls, force = [], float("nan")
-    for _ in range(repeat):
-        print("  step-42", file=sys.stderr)
-        start = time.monotonic()
-        process = subprocess.run(
-            ["mpirun", "-np", "2", "./step-42", "p1_adaptive.prm"],
-            cwd=folder, env=env, stdout=subprocess.PIPE, text=True,
-            check=True)
-        walls.append(time.monotonic() - start)
-        forces = re.findall(r"Contact force = (\S+)", process.stdout)
-        force = float(forces[-1])
-    return statistics.median(walls), force
+    print("  step-42", file=sys.stderr)
+    start = time.monotonic()
+    process = subprocess.run(
+        ["mpirun", "-np", "2", "./step-42", "p1_adaptive.prm"],
+        cwd=folder, env=env, stdout=subprocess.PIPE, text=True, check=True)
+    forces = re.findall(r"Contact force = (\S+)", process.stdout)
+    return time.monotonic() - start, float(forces[-1])
+
+
+MATRIX_FREE = {"Linear solver": {"Type": "matrix-free"}}
+OPERATORS = (("assembled", {}), ("matrix-free", MATRIX_FREE))
+
+
+def with_overrides(base, extra):
+    """`base` overrides with the subsections of `extra` added."""
+    merged = {key: dict(value) for key, value in base.items()}
+    for key, value in extra.items():
+        merged.setdefault(key, {}).update(value)
+    return merged
 
 
 def three_d(repeat):
     """The 3D and parallel figures; returns the README section."""
     rows = []
     cases = CASES_3D[:1] if common.SMOKE else CASES_3D
-    for name, scene, overrides in cases:
-        for processes in (1, 2):
-            last = measure("%s_np%d" % (name, processes), scene, overrides,
-                           repeat, processes)[-1]
+    # A scene's cases (both operators, one and two processes) in turn.
+    for scene in sorted(set(case[1] for case in cases),
+                        key=[case[1] for case in cases].index):
+        runs = [("%s_np%d" % (name, n), scene, overrides, n)
+                for n in (1, 2)
+                for name, case_scene, overrides in cases
+                if case_scene == scene]
+        measured = measure_in_turn(runs, repeat)
+        for run_name, _, overrides, processes in runs:
+            last = measured[run_name][-1]
             rows.append(["`%s`" % os.path.basename(scene),
                          elastic_operator(overrides), "%d" % processes,
                          "{:,}".format(int(last["dofs"])),
                          "%d" % last["iterations"],
+                         "%.2f" % last["linear_solve"],
+                         "%.1f" % (1e6 * last["linear_solve"] * processes /
+                                   last["dofs"]),
                          "%.2f" % last["ratio"],
                          "%.0f" % last["peak_memory"]])
     ratios = common.table(["scene", "elastic operator", "processes",
-                           "final dofs", "iterations", "ratio",
+                           "final dofs", "Newton steps",
+                           "one linear solve [s]",
+                           "µs per dof per core", "ratio",
                            "peak memory [MB]"], rows)
     print("\n3D, final cycles\n\n" + ratios)
 
-    large = {n: whole_runs("indentation_large_np%d" % n,
-                           "prm/sphere_indentation.prm", LARGE, repeat, n)
-             for n in (1, 2)}
-    large_rows = [["%d" % n, "{:,}".format(int(r["dofs"])),
-                   "%.1f" % r["wall"], "%.1f %%" % (100 * r["output"]),
-                   "%.1f %%" % (100 * r["checkpoint"]),
-                   "%.0f" % r["memory"], "%.2f" % r["per_dof"]]
-                  for n, r in large.items()]
-    speedup = large[1]["wall"] / large[2]["wall"]
-    large_text = common.table(["processes", "final dofs", "wall time [s]",
-                               "output", "checkpoint", "peak memory [MB]",
+    # The large run with both operators, one and two processes, in turn.
+    large_cases = [("indentation_large_%s_np%d" % (label, n),
+                    "prm/sphere_indentation.prm",
+                    with_overrides(LARGE, overrides), n)
+                   for n in (1, 2) for label, overrides in OPERATORS]
+    large = whole_runs_in_turn(large_cases, repeat)
+    large_rows = []
+    for name, _, overrides, n in large_cases:
+        r = large[name]
+        large_rows.append([elastic_operator(overrides), "%d" % n,
+                           "{:,}".format(int(r["dofs"])), "%.1f" % r["wall"],
+                           "%.1f %%" % (100 * r["output"]),
+                           "%.0f" % r["memory"], "%.2f" % r["per_dof"]])
+    large_text = common.table(["elastic operator", "processes", "final dofs",
+                               "wall time [s]", "output", "peak memory [MB]",
                                "memory per dof [kB]"], large_rows)
+    wall = {(label, n): large["indentation_large_%s_np%d" % (label, n)]["wall"]
+            for n in (1, 2) for label, _ in OPERATORS}
+    speedup = {label: wall[(label, 1)] / wall[(label, 2)]
+               for label, _ in OPERATORS}
+    gain = wall[("assembled", 2)] / wall[("matrix-free", 2)]
     print("\nIndentation at %s dofs\n\n%s\nspeed-up 1 -> 2 processes: "
-          "%.2f" % ("{:,}".format(int(large[2]["dofs"])), large_text,
-                    speedup))
+          "assembled %.2f, matrix-free %.2f; matrix-free on 2 processes "
+          "%.2f times faster" %
+          ("{:,}".format(int(large_cases and large[large_cases[-1][0]]["dofs"])),
+           large_text, speedup["assembled"], speedup["matrix-free"], gain))
 
+    # step-42 and signorini on its meshes, 2 processes, in turn.
+    step42_cases = [("indentation_step42_%s" % label,
+                     "prm/sphere_indentation.prm", overrides, 2)
+                    for label, overrides in OPERATORS]
+    step42_runs = []
     if common.SMOKE:
         print("step-42: not built in smoke mode", file=sys.stderr)
-        step42 = (float("nan"), float("nan"))
+        step42_cases = step42_cases[:1]
+        between = None
     else:
-        step42 = run_step42(build_step42(), repeat)
-    ours = whole_runs("indentation_step42_np2", "prm/sphere_indentation.prm",
-                      {}, repeat, 2)
-    versus = step42[0] / ours["wall"]
+        folder = build_step42()
+        def between():
+            step42_runs.append(run_step42(folder))
+    ours = whole_runs_in_turn(step42_cases, repeat, between=between)
+    step42 = ((statistics.median(w for w, _ in step42_runs),
+               step42_runs[0][1]) if step42_runs
+              else (float("nan"), float("nan")))
+    versus = {label: step42[0] / ours["indentation_step42_%s" % label]["wall"]
+              for label, _ in OPERATORS
+              if "indentation_step42_%s" % label in ours}
+    versus.setdefault("matrix-free", float("nan"))
+    mf = ours.get("indentation_step42_matrix-free",
+                  ours["indentation_step42_assembled"])
     print("step-42 (elastic), 2 processes: %.1f s, contact force %.3f; "
-          "signorini: %.1f s, contact force %.3f; %.1f times faster" %
-          (step42[0], step42[1], ours["wall"], ours["force"], versus))
+          "signorini assembled %.1f s (%.1f times faster), matrix-free %.1f s "
+          "(%.1f times faster), contact force %.3f" %
+          (step42[0], step42[1],
+           ours["indentation_step42_assembled"]["wall"],
+           versus["assembled"], mf["wall"], versus["matrix-free"],
+           mf["force"]))
 
     shares = []
     scenes = sorted(s for s in os.listdir(os.path.join(common.ROOT, "prm"))
@@ -230,40 +312,53 @@ def three_d(repeat):
                                 "output", "checkpoint"], shares)
     print("\nOutput share, one process\n\n" + shares_text)
 
-    hertz = {n: whole_runs("hertz_2d_np%d" % n, "prm/hertz_cylinder.prm",
-                           HERTZ_2D, repeat, n) for n in (1, 2)}
-    hertz_speedup = hertz[1]["wall"] / hertz[2]["wall"]
-    amg = dict(HERTZ_2D, **{"Linear solver": {"Type": "amg cg"}})
-    hertz_amg = whole_runs("hertz_2d_amg_np1", "prm/hertz_cylinder.prm", amg,
-                           repeat, 1)
-    print("2D Hertz at %s dofs: %.1f s on one process (direct), %.1f s on "
-          "two (amg cg): speed-up %.2f; amg cg on one: %.1f s" %
-          ("{:,}".format(int(hertz[1]["dofs"])), hertz[1]["wall"],
-           hertz[2]["wall"], hertz_speedup, hertz_amg["wall"]))
+    amg = with_overrides(HERTZ_2D, {"Linear solver": {"Type": "amg cg"}})
+    direct = with_overrides(HERTZ_2D, {"Linear solver": {"Type": "direct"}})
+    hertz = whole_runs_in_turn(
+        [("hertz_2d_np1", "prm/hertz_cylinder.prm", HERTZ_2D, 1),
+         ("hertz_2d_np2", "prm/hertz_cylinder.prm", HERTZ_2D, 2),
+         ("hertz_2d_direct_np1", "prm/hertz_cylinder.prm", direct, 1),
+         ("hertz_2d_amg_np1", "prm/hertz_cylinder.prm", amg, 1)], repeat)
+    hertz_speedup = hertz["hertz_2d_np1"]["wall"] / hertz["hertz_2d_np2"]["wall"]
+    print("2D Hertz at %s dofs, automatic: %.1f s on one process, %.1f s on "
+          "two: speed-up %.2f; on one process direct %.1f s, amg cg %.1f s" %
+          ("{:,}".format(int(hertz["hertz_2d_np1"]["dofs"])),
+           hertz["hertz_2d_np1"]["wall"], hertz["hertz_2d_np2"]["wall"],
+           hertz_speedup, hertz["hertz_2d_direct_np1"]["wall"],
+           hertz["hertz_2d_amg_np1"]["wall"]))
 
     return ("3D scenes (`hertz_sphere.prm` with 6 cycles), final cycle, "
-            "%s (`mpirun -np 1` and `-np 2`; the ratio is the contact solve "
-            "over one linear solve with the same elastic operator):\n\n%s\n"
+            "%s, each scene's runs in turn (`mpirun -np 1` and `-np 2`; one "
+            "linear solve is the elasticity system of the final mesh with "
+            "the same elastic operator, and the ratio the contact solve over "
+            "it):\n\n%s\n"
             "`sphere_indentation.prm` refined to %s dofs (7 cycles), the "
-            "whole run as a user runs it, output included:\n\n%s\n"
-            "Speed-up from 1 to 2 processes: **%.2f**. step-42 itself "
-            "(elastic, 6 cycles to 493,287 dofs, 2 processes): %.1f s, "
-            "contact force %.3f N; signorini on the same meshes: %.1f s, "
-            "%.3f N: **%.1f times faster**.\n\n"
+            "whole run as a user runs it, output included, the four runs "
+            "in turn:\n\n%s\n"
+            "Speed-up from 1 to 2 processes: assembled **%.2f**, matrix-free "
+            "**%.2f**; on two processes the matrix-free run is **%.2f** times "
+            "faster than the assembled one. step-42 itself (elastic, 6 "
+            "cycles to 493,287 dofs, 2 processes, run in turn with "
+            "signorini's): %.1f s, contact force %.3f N; signorini on the "
+            "same meshes: assembled %.1f s (**%.1f times faster**), "
+            "matrix-free %.1f s (**%.1f times faster**), %.3f N.\n\n"
             "Output share of the run time, each shipped scene as shipped, "
             "one process (the checkpoint, written after every cycle, is its "
             "own column):\n\n%s\n"
             "2D Hertz at %s dofs (12 cycles), `automatic` linear solver: "
-            "%.1f s on one process (direct), %.1f s on two (amg cg): "
-            "speed-up **%.2f**; amg cg on one process: %.1f s, so %.2f "
-            "with the same solver.\n" %
+            "%.1f s on one process, %.1f s on two: speed-up **%.2f**; on one "
+            "process direct %.1f s, amg cg %.1f s.\n" %
             ("one run" if repeat == 1 else "medians of %d runs" % repeat,
-             ratios, "{:,}".format(int(large[2]["dofs"])),
-             large_text, speedup, step42[0], step42[1], ours["wall"],
-             ours["force"], versus, shares_text,
-             "{:,}".format(int(hertz[1]["dofs"])), hertz[1]["wall"],
-             hertz[2]["wall"], hertz_speedup, hertz_amg["wall"],
-             hertz_amg["wall"] / hertz[2]["wall"]))
+             ratios, "{:,}".format(int(large[large_cases[-1][0]]["dofs"])),
+             large_text, speedup["assembled"], speedup["matrix-free"], gain,
+             step42[0], step42[1],
+             ours["indentation_step42_assembled"]["wall"],
+             versus["assembled"], mf["wall"], versus["matrix-free"],
+             mf["force"], shares_text,
+             "{:,}".format(int(hertz["hertz_2d_np1"]["dofs"])),
+             hertz["hertz_2d_np1"]["wall"], hertz["hertz_2d_np2"]["wall"],
+             hertz_speedup, hertz["hertz_2d_direct_np1"]["wall"],
+             hertz["hertz_2d_amg_np1"]["wall"]))
 
 
 def main():
