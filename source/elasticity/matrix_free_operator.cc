@@ -377,6 +377,13 @@ namespace signorini
   void
   MatrixFreeOperator<dim>::invalidate()
   {
+    // The operator of this mesh, its levels and their contact are built
+    // anew by the next solve, as the assembled operator assembles anew.
+    multigrid.clear();
+    if (fine)
+      fine->clear();
+    fine.reset();
+    levels_ready  = false;
     contact_ready = false;
     if (fallback)
       fallback->invalidate();

@@ -56,7 +56,9 @@ namespace signorini
           VectorType                      &u,
           const bool                       final_step) = 0;
 
-    /** Forgets the system assembled last: the next solve assembles anew. */
+    /** Forgets the system built last: the next solve builds it anew (the
+     * matrix and its preconditioner, or the cell data and the multigrid
+     * levels). */
     virtual void
     invalidate() = 0;
 
