@@ -97,6 +97,12 @@ namespace signorini
     return index;
   }
 
+  const double *
+  CellMatrices::matrix(const unsigned int index) const
+  {
+    return entries.data() + std::size_t(index) * n * n;
+  }
+
   void
   CellMatrices::apply(const unsigned int index,
                       const double      *x,

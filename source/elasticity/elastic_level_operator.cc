@@ -237,11 +237,86 @@ namespace signorini
   void
   ElasticLevelOperator<dim>::compute_diagonal()
   {
+    // The diagonal of C^T K C, C the constraints: a cell without
+    // constrained dofs adds its matrix's diagonal; a cell with some adds
+    // v^T K v for each dof g its dofs depend on, v_i the weight of g in
+    // local dof i (1 for g itself, a hanging node's weight, 0 for a
+    // Dirichlet dof).
+    constexpr unsigned int n  = Evaluation::static_dofs_per_cell;
+    const auto            &fe = matrix_free.get_dof_handler().get_fe();
+    // The FE's local dof k at FEEvaluation's position (component by
+    // component, Q1's nodes lexicographic as its vertices).
+    std::array<unsigned int, n> position;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto [component, node] = fe.system_to_component_index(k);
+        position[k]                  = component * (n / dim) + node;
+      }
     matrix_free.initialize_dof_vector(diagonal_without_contact);
-    MatrixFreeTools::compute_diagonal(matrix_free,
-                                      diagonal_without_contact,
-                                      &ElasticLevelOperator::apply_cell,
-                                      this);
+    Evaluation                           phi(matrix_free);
+    std::vector<double>                  columns(n * n);
+    std::vector<types::global_dof_index> indices(n);
+    std::vector<std::pair<types::global_dof_index,
+                          std::vector<std::pair<unsigned int, double>>>>
+      depends;
+    for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
+      {
+        const double *K = nullptr;
+        if (matrix_of_cell[cell] != CellMatrices::none)
+          K = cell_matrices.matrix(matrix_of_cell[cell]);
+        else
+          {
+            phi.reinit(cell);
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                for (unsigned int i = 0; i < n; ++i)
+                  phi.begin_dof_values()[i] = (i == j) ? 1. : 0.;
+                apply_at_quadrature_points(phi);
+                for (unsigned int i = 0; i < n; ++i)
+                  columns[j * n + i] = phi.begin_dof_values()[i][0];
+              }
+            K = columns.data();
+          }
+        matrix_free.get_cell_iterator(cell, 0)->get_dof_indices(indices);
+        bool plain = true;
+        for (const auto index : indices)
+          plain = plain && !constraints->is_constrained(index);
+        if (plain)
+          {
+            for (unsigned int k = 0; k < n; ++k)
+              diagonal_without_contact(indices[k]) +=
+                K[position[k] * n + position[k]];
+            continue;
+          }
+        depends.clear();
+        const auto add = [&](const types::global_dof_index g,
+                             const unsigned int            local,
+                             const double                  weight) {
+          for (auto &[dof, weights] : depends)
+            if (dof == g)
+              {
+                weights.emplace_back(local, weight);
+                return;
+              }
+          depends.push_back({g, {{local, weight}}});
+        };
+        for (unsigned int k = 0; k < n; ++k)
+          if (const auto *entries =
+                constraints->get_constraint_entries(indices[k]))
+            for (const auto &[master, weight] : *entries)
+              add(master, position[k], weight);
+          else if (!constraints->is_constrained(indices[k]))
+            add(indices[k], position[k], 1.);
+        for (const auto &[dof, weights] : depends)
+          {
+            double sum = 0.;
+            for (const auto &[a, wa] : weights)
+              for (const auto &[b, wb] : weights)
+                sum += wa * wb * K[b * n + a];
+            diagonal_without_contact(dof) += sum;
+          }
+      }
+    diagonal_without_contact.compress(VectorOperation::add);
     for (const unsigned int i : constrained)
       diagonal_without_contact.local_element(i) = 1.;
   }

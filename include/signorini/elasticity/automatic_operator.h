@@ -61,9 +61,9 @@ namespace signorini
     release() override;
 
   private:
-    const Discretisation<dim>           &discretisation;
-    const bool                           pointwise;
-    Factory                              make;
+    const Discretisation<dim>            &discretisation;
+    const bool                            pointwise;
+    Factory                               make;
     std::unique_ptr<ElasticOperator<dim>> chosen;
   };
 } // namespace signorini

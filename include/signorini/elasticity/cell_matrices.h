@@ -42,6 +42,10 @@ namespace signorini
     unsigned int
     add(const Key &key, const std::vector<double> &columns);
 
+    /** The matrix @p index, by columns (n x n). */
+    const double *
+    matrix(const unsigned int index) const;
+
     /** y = K_index x (x and y of size n, not overlapping). */
     void
     apply(const unsigned int index, const double *x, double *y) const;
