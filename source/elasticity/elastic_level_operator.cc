@@ -48,6 +48,8 @@ namespace signorini
     matrix_free.clear();
     cell_matrices.clear();
     matrix_of_cell = {};
+    cell_dofs      = {};
+    direct         = {};
     constraints    = nullptr;
     constrained.clear();
     identity.clear();
@@ -139,14 +141,26 @@ namespace signorini
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
   {
-    Evaluation phi(data);
+    Evaluation             phi(data);
+    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    double                 x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
-      {
-        phi.reinit(cell);
-        phi.read_dof_values(src);
-        apply_cell(phi);
-        phi.distribute_local_to_global(dst);
-      }
+      if (direct[cell])
+        {
+          const unsigned int *dofs = &cell_dofs[cell * n];
+          for (unsigned int i = 0; i < n; ++i)
+            x[i] = src.local_element(dofs[i]);
+          cell_matrices.apply(matrix_of_cell[cell], x, y);
+          for (unsigned int i = 0; i < n; ++i)
+            dst.local_element(dofs[i]) += y[i];
+        }
+      else
+        {
+          phi.reinit(cell);
+          phi.read_dof_values(src);
+          apply_cell(phi);
+          phi.distribute_local_to_global(dst);
+        }
   }
 
   template <int dim>
@@ -157,14 +171,26 @@ namespace signorini
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
   {
-    Evaluation phi(data);
+    Evaluation             phi(data);
+    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    double                 x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
-      {
-        phi.reinit(cell);
-        phi.read_dof_values_plain(src);
-        apply_cell(phi);
-        phi.distribute_local_to_global(dst);
-      }
+      if (direct[cell])
+        {
+          const unsigned int *dofs = &cell_dofs[cell * n];
+          for (unsigned int i = 0; i < n; ++i)
+            x[i] = src.local_element(dofs[i]);
+          cell_matrices.apply(matrix_of_cell[cell], x, y);
+          for (unsigned int i = 0; i < n; ++i)
+            dst.local_element(dofs[i]) += y[i];
+        }
+      else
+        {
+          phi.reinit(cell);
+          phi.read_dof_values_plain(src);
+          apply_cell(phi);
+          phi.distribute_local_to_global(dst);
+        }
   }
 
   template <int dim>
@@ -253,6 +279,9 @@ namespace signorini
         position[k]                  = component * (n / dim) + node;
       }
     matrix_free.initialize_dof_vector(diagonal_without_contact);
+    const auto &partitioner = *matrix_free.get_vector_partitioner();
+    cell_dofs.assign(matrix_free.n_cell_batches() * n, 0);
+    direct.assign(matrix_free.n_cell_batches(), false);
     Evaluation                           phi(matrix_free);
     std::vector<double>                  columns(n * n);
     std::vector<types::global_dof_index> indices(n);
@@ -279,8 +308,13 @@ namespace signorini
           }
         matrix_free.get_cell_iterator(cell, 0)->get_dof_indices(indices);
         bool plain = true;
-        for (const auto index : indices)
-          plain = plain && !constraints->is_constrained(index);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            plain = plain && !constraints->is_constrained(indices[k]);
+            cell_dofs[cell * n + position[k]] =
+              partitioner.global_to_local(indices[k]);
+          }
+        direct[cell] = plain && matrix_of_cell[cell] != CellMatrices::none;
         if (plain)
           {
             for (unsigned int k = 0; k < n; ++k)

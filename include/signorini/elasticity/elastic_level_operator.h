@@ -171,7 +171,12 @@ namespace signorini
      * Debian's deal.II does not vectorise over cells). */
     CellMatrices cell_matrices;
     /** The matrix of each cell, or CellMatrices::none. */
-    std::vector<unsigned int>                matrix_of_cell;
+    std::vector<unsigned int> matrix_of_cell;
+    /** Per cell, its dofs' local vector indices in FEEvaluation's order;
+     * used for the cells that have a shape matrix and no constrained dof
+     * (`direct`), which are read and written without FEEvaluation. */
+    std::vector<unsigned int>                cell_dofs;
+    std::vector<bool>                        direct;
     const dealii::AffineConstraints<double> *constraints = nullptr;
     /** Locally owned constrained dofs (local indices). */
     std::vector<unsigned int> constrained;
