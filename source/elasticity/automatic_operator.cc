@@ -1,8 +1,46 @@
+#include <deal.II/base/mpi.h>
+
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/automatic_operator.h>
 
 namespace signorini
 {
+  using namespace dealii;
+
+  namespace
+  {
+    /** Whether @p cell is a parallelogram or parallelepiped with flat
+     * manifolds: its matrix-free stiffness is one matrix per shape. */
+    template <typename Cell>
+    bool
+    affine(const Cell &cell)
+    {
+      constexpr int dim = Cell::AccessorType::dimension;
+      if (cell->manifold_id() != numbers::flat_manifold_id)
+        return false;
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->manifold_id() != numbers::flat_manifold_id)
+          return false;
+      if (dim == 3)
+        for (unsigned int l = 0; l < cell->n_lines(); ++l)
+          if (cell->line(l)->manifold_id() != numbers::flat_manifold_id)
+            return false;
+      // Vertex i (bits x, y, z) at v0 + the edges along its bits.
+      const auto   v0        = cell->vertex(0);
+      const double tolerance = 1e-10 * cell->diameter();
+      for (unsigned int i = 0; i < cell->n_vertices(); ++i)
+        {
+          auto expected = v0;
+          for (unsigned int bit = 0; bit < dim; ++bit)
+            if (i & (1u << bit))
+              expected += cell->vertex(1u << bit) - v0;
+          if (cell->vertex(i).distance(expected) > tolerance)
+            return false;
+        }
+      return true;
+    }
+  } // namespace
+
   template <int dim>
   AutomaticOperator<dim>::AutomaticOperator(
     const Discretisation<dim> &discretisation,
@@ -19,7 +57,25 @@ namespace signorini
   AutomaticOperator<dim>::reinit()
   {
     if (!chosen)
-      chosen = make(dim == 3 && !discretisation.simplex() && pointwise);
+      {
+        bool matrix_free = dim == 3 && !discretisation.simplex() && pointwise;
+        if (matrix_free)
+          {
+            double counts[2] = {0., 0.};
+            for (const auto &cell :
+                 discretisation.triangulation().active_cell_iterators())
+              if (cell->is_locally_owned())
+                {
+                  counts[0] += affine(cell) ? 1. : 0.;
+                  counts[1] += 1.;
+                }
+            Utilities::MPI::sum(counts,
+                                discretisation.mpi_communicator(),
+                                counts);
+            matrix_free = counts[0] >= 0.5 * counts[1];
+          }
+        chosen = make(matrix_free);
+      }
     chosen->reinit();
   }
 

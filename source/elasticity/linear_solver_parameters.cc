@@ -27,8 +27,10 @@ namespace signorini
                       solver_types.pattern(),
                       "direct: sparse LU (Trilinos Amesos MUMPS); amg cg: "
                       "conjugate gradients with algebraic multigrid (Trilinos "
-                      "ML); automatic: matrix-free on hexahedra in 3D (the "
-                      "volumetric strain at every point), else direct in 2D "
+                      "ML); automatic: matrix-free on hexahedra in 3D (at "
+                      "least half of them parallelepipeds with flat "
+                      "manifolds, the volumetric strain at every point), "
+                      "else direct in 2D "
                       "on one process below 100,000 dofs and amg cg above, "
                       "in 3D and on several processes, the faster choices "
                       "as measured (see README); matrix-free: no matrix, the "

@@ -15,12 +15,17 @@ namespace signorini
    * `Linear solver/Type = automatic`: the elastic operator that measured
    * fastest for the mesh, chosen at the first reinit(), when the mesh is
    * known. MatrixFreeOperator on hexahedra in 3D with the volumetric strain
-   * taken at every point: it solved faster than the assembled operator on
-   * every mesh of sphere_indentation (2,187 to 493,287 dofs, one and two
-   * processes) and held half its memory. AssembledOperator otherwise: in 2D
-   * (the assembled solvers took half the matrix-free time on the 2D Hertz
-   * scene at every size), on tetrahedra, and with the cell mean of the
-   * volumetric strain, which the matrix-free operator does not evaluate.
+   * taken at every point when at least half the cells are parallelepipeds
+   * with flat manifolds (their stiffness one matrix per shape, which stays
+   * so as they refine): on sphere_indentation's boxes it solved faster than
+   * the assembled operator on every mesh (2,187 to 493,287 dofs, one and
+   * two processes; one linear solve 2.76 s against 6.39 s at 493,287 dofs)
+   * in half the memory. AssembledOperator otherwise: on the Hertz quarter
+   * ball's curved cells (evaluated at quadrature points, one at a time) one
+   * linear solve took 6.62 s matrix-free against 4.24 s assembled (244,143
+   * dofs); in 2D the assembled solvers took half the matrix-free time on
+   * the 2D Hertz scene at every size; tetrahedra and the cell mean of the
+   * volumetric strain the matrix-free operator does not evaluate.
    */
   template <int dim>
   class AutomaticOperator : public ElasticOperator<dim>

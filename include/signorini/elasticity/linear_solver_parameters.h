@@ -13,7 +13,7 @@ namespace signorini
    * with the translations as near-null space. `matrix-free` holds no
    * matrix: MatrixFreeOperator, CG with geometric multigrid (Q1, pointwise
    * volumetric strain, not axisymmetric). `automatic` takes matrix-free on
-   * hexahedra in 3D where it applies (AutomaticOperator), else the
+   * hexahedra in 3D where it is faster (AutomaticOperator), else the
    * assembled operator with the solver of resolved_type().
    */
   class LinearSolverParameters
