@@ -134,8 +134,9 @@ namespace signorini
   }
 
   template <int dim>
+  template <bool as_given>
   void
-  ElasticLevelOperator<dim>::local_apply(
+  ElasticLevelOperator<dim>::apply_cells(
     const MatrixFree<dim, double>               &data,
     VectorType                                  &dst,
     const VectorType                            &src,
@@ -157,10 +158,24 @@ namespace signorini
       else
         {
           phi.reinit(cell);
-          phi.read_dof_values(src);
+          if (as_given)
+            phi.read_dof_values_plain(src);
+          else
+            phi.read_dof_values(src);
           apply_cell(phi);
           phi.distribute_local_to_global(dst);
         }
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::local_apply(
+    const MatrixFree<dim, double>               &data,
+    VectorType                                  &dst,
+    const VectorType                            &src,
+    const std::pair<unsigned int, unsigned int> &cells) const
+  {
+    apply_cells<false>(data, dst, src, cells);
   }
 
   template <int dim>
@@ -171,26 +186,7 @@ namespace signorini
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
   {
-    Evaluation             phi(data);
-    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
-    double                 x[n], y[n];
-    for (unsigned int cell = cells.first; cell < cells.second; ++cell)
-      if (direct[cell])
-        {
-          const unsigned int *dofs = &cell_dofs[cell * n];
-          for (unsigned int i = 0; i < n; ++i)
-            x[i] = src.local_element(dofs[i]);
-          cell_matrices.apply(matrix_of_cell[cell], x, y);
-          for (unsigned int i = 0; i < n; ++i)
-            dst.local_element(dofs[i]) += y[i];
-        }
-      else
-        {
-          phi.reinit(cell);
-          phi.read_dof_values_plain(src);
-          apply_cell(phi);
-          phi.distribute_local_to_global(dst);
-        }
+    apply_cells<true>(data, dst, src, cells);
   }
 
   template <int dim>

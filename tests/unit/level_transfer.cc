@@ -21,6 +21,7 @@
 #include <signorini/elasticity/coarsening_sequence.h>
 #include <signorini/elasticity/level_transfer.h>
 
+#include "checks.h"
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -30,25 +31,12 @@
 
 using namespace dealii;
 using namespace signorini;
+using checks::first_process;
+using checks::report;
 
 namespace
 {
   using VectorType = LinearAlgebra::distributed::Vector<double>;
-
-  bool
-  first_process()
-  {
-    return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
-
-  void
-  report(const std::string &what, const double difference, const double tol)
-  {
-    if (first_process())
-      std::cout << "  " << what << ": " << std::scientific
-                << std::setprecision(1) << difference
-                << (difference <= tol ? "  (ok)" : "  (FAILED)") << '\n';
-  }
 
   /** u = x (1, 2, 3): linear, zero on the face x = 0. */
   class Linear : public Function<3>

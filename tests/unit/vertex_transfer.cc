@@ -21,6 +21,7 @@
 
 #include <signorini/mesh_adaptation/vertex_transfer.h>
 
+#include "checks.h"
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -32,27 +33,13 @@
 
 using namespace dealii;
 using namespace signorini;
+using checks::first_process;
+using checks::report;
 
 namespace
 {
   using VectorType = TrilinosWrappers::MPI::Vector;
   using Field      = std::function<double(const Point<3> &, unsigned int)>;
-
-  bool
-  first_process()
-  {
-    return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
-
-  void
-  report(const std::string &what, const double difference, const double tol)
-  {
-    if (first_process())
-      std::cout << "  " << what << ": " << std::scientific
-                << std::setprecision(1) << difference
-                << (difference <= tol ? "  (ok)" : "  (FAILED)")
-                << std::defaultfloat << std::setprecision(10) << '\n';
-  }
 
   template <int dim>
   Point<3>

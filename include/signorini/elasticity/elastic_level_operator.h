@@ -148,6 +148,16 @@ namespace signorini
     void
     setup_cell_matrices();
 
+    /** dst += K src on @p cells: the `direct` cells by their matrix, the
+     * others through FEEvaluation, which reads @p src with the constraints
+     * resolved, or @p as_given. */
+    template <bool as_given>
+    void
+    apply_cells(const dealii::MatrixFree<dim, double>       &data,
+                VectorType                                  &dst,
+                const VectorType                            &src,
+                const std::pair<unsigned int, unsigned int> &cells) const;
+
     void
     local_apply(const dealii::MatrixFree<dim, double>       &data,
                 VectorType                                  &dst,
