@@ -108,25 +108,12 @@ namespace signorini
                       const double      *x,
                       double            *y) const
   {
-    const double *K = entries.data() + std::size_t(index) * n * n;
+    const double *K = matrix(index);
     if (n == 24)
       apply_hexahedron(K, x, y);
     else if (n == 8)
       apply_quadrilateral(K, x, y);
     else
       apply_any(n, K, x, y);
-  }
-
-  unsigned int
-  CellMatrices::size() const
-  {
-    return index_of.size();
-  }
-
-  std::size_t
-  CellMatrices::memory_consumption() const
-  {
-    return entries.size() * sizeof(double) +
-           index_of.size() * (sizeof(Key) + n * sizeof(double) + 64);
   }
 } // namespace signorini

@@ -62,6 +62,23 @@ namespace signorini
 
   template <int dim>
   void
+  ElasticLevelOperator<dim>::quadrature_matrix(
+    Evaluation          &phi,
+    std::vector<double> &columns) const
+  {
+    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          phi.begin_dof_values()[i] = (i == j) ? 1. : 0.;
+        apply_at_quadrature_points(phi);
+        for (unsigned int i = 0; i < n; ++i)
+          columns[j * n + i] = phi.begin_dof_values()[i][0];
+      }
+  }
+
+  template <int dim>
+  void
   ElasticLevelOperator<dim>::setup_cell_matrices()
   {
     static_assert(VectorizedArray<double>::size() == 1 &&
@@ -85,14 +102,7 @@ namespace signorini
         unsigned int index = cell_matrices.find(key);
         if (index == CellMatrices::none)
           {
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                for (unsigned int i = 0; i < n; ++i)
-                  phi.begin_dof_values()[i] = (i == j) ? 1. : 0.;
-                apply_at_quadrature_points(phi);
-                for (unsigned int i = 0; i < n; ++i)
-                  columns[j * n + i] = phi.begin_dof_values()[i][0];
-              }
+            quadrature_matrix(phi, columns);
             index = cell_matrices.add(key, columns);
           }
         matrix_of_cell[cell] = index;
@@ -292,14 +302,7 @@ namespace signorini
         else
           {
             phi.reinit(cell);
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                for (unsigned int i = 0; i < n; ++i)
-                  phi.begin_dof_values()[i] = (i == j) ? 1. : 0.;
-                apply_at_quadrature_points(phi);
-                for (unsigned int i = 0; i < n; ++i)
-                  columns[j * n + i] = phi.begin_dof_values()[i][0];
-              }
+            quadrature_matrix(phi, columns);
             K = columns.data();
           }
         matrix_free.get_cell_iterator(cell, 0)->get_dof_indices(indices);

@@ -375,16 +375,23 @@ namespace signorini
 
   template <int dim>
   void
-  MatrixFreeOperator<dim>::invalidate()
+  MatrixFreeOperator<dim>::forget_operator()
   {
-    // The operator of this mesh, its levels and their contact are built
-    // anew by the next solve, as the assembled operator assembles anew.
     multigrid.clear();
     if (fine)
       fine->clear();
     fine.reset();
     levels_ready  = false;
     contact_ready = false;
+  }
+
+  template <int dim>
+  void
+  MatrixFreeOperator<dim>::invalidate()
+  {
+    // The operator of this mesh, its levels and their contact are built
+    // anew by the next solve, as the assembled operator assembles anew.
+    forget_operator();
     if (fallback)
       fallback->invalidate();
   }
@@ -393,13 +400,8 @@ namespace signorini
   void
   MatrixFreeOperator<dim>::release()
   {
-    multigrid.clear();
-    if (fine)
-      fine->clear();
-    fine.reset();
+    forget_operator();
     load_la.reinit(0);
-    levels_ready  = false;
-    contact_ready = false;
     if (fallback)
       fallback->release();
     release_free_memory();

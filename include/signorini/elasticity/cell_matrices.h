@@ -50,14 +50,6 @@ namespace signorini
     void
     apply(const unsigned int index, const double *x, double *y) const;
 
-    /** The number of matrices. */
-    unsigned int
-    size() const;
-
-    /** The memory held [bytes]. */
-    std::size_t
-    memory_consumption() const;
-
     /** More distinct shapes than this (a distorted mesh) are evaluated at
      * quadrature points instead. */
     static constexpr unsigned int max_matrices = 512;

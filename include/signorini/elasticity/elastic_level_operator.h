@@ -144,6 +144,11 @@ namespace signorini
     void
     apply_at_quadrature_points(Evaluation &phi) const;
 
+    /** The stiffness of @p phi's cell by columns (n x n), from the
+     * quadrature points. */
+    void
+    quadrature_matrix(Evaluation &phi, std::vector<double> &columns) const;
+
     /** The matrices of the cells with an affine mapping, one per shape. */
     void
     setup_cell_matrices();

@@ -9,7 +9,6 @@
 #include <deal.II/multigrid/mg_base.h>
 #include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
-#include <deal.II/multigrid/mg_transfer_global_coarsening.h>
 #include <deal.II/multigrid/multigrid.h>
 
 #include <signorini/elasticity/elastic_level_operator.h>

@@ -87,6 +87,11 @@ namespace signorini
   private:
     using LAVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
+    /** Drops the fine operator, the levels and their contact (the next
+     * solve builds them). */
+    void
+    forget_operator();
+
     /** The fine operator of the current mesh. */
     void
     setup_fine();
