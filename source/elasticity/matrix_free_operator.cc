@@ -184,6 +184,7 @@ namespace signorini
     constraints.merge(discretisation.constraints(),
                       AffineConstraints<double>::left_object_wins);
     constraints.close();
+    local_constraints.reinit(constraints, load_la.get_partitioner());
 
     const auto &owned = discretisation.locally_owned_dofs();
     std::vector<typename ElasticLevelOperator<dim>::HeldLine> held;
@@ -243,13 +244,10 @@ namespace signorini
   void
   MatrixFreeOperator<dim>::newton_residual(
     const ContactLinearisation<dim> &linearisation,
-    const VectorType                &u,
+    const LAVector                  &u,
     LAVector                        &r) const
   {
-    LAVector x;
-    fine->initialize_dof_vector(x);
-    to_la(u, x);
-    fine->internal_force(r, x);
+    fine->internal_force(r, u);
     r -= load_la;
     // The springs' force (k n.u + rest force - extra force) n on their
     // nodes' free components.
@@ -289,15 +287,14 @@ namespace signorini
       setup_contact(linearisation);
 
     TimerOutput::Scope t(timer, "Solve: CG");
-    const MPI_Comm     comm  = discretisation.mpi_communicator();
-    const auto        &owned = discretisation.locally_owned_dofs();
     // u0: the current displacement with the constraints applied; the
     // right-hand side's norm is that of the system for d = u - G(0).
-    VectorType u0(owned, comm), lifting(owned, comm);
-    u0 = u;
-    constraints.distribute(u0);
-    constraints.distribute(lifting);
-    LAVector rhs, reference, d;
+    LAVector u0, lifting, rhs, reference, d;
+    fine->initialize_dof_vector(u0);
+    fine->initialize_dof_vector(lifting);
+    to_la(u, u0);
+    local_constraints.distribute(u0);
+    local_constraints.distribute(lifting);
     fine->initialize_dof_vector(rhs);
     fine->initialize_dof_vector(reference);
     fine->initialize_dof_vector(d);
@@ -328,10 +325,11 @@ namespace signorini
                               " iterations (residual " +
                               std::to_string(failure.last_residual) + ")");
       }
-    VectorType result(owned, comm);
+    d += u0;
+    local_constraints.distribute(d);
+    const MPI_Comm comm = discretisation.mpi_communicator();
+    VectorType     result(discretisation.locally_owned_dofs(), comm);
     from_la(d, result);
-    result += u0;
-    constraints.distribute(result);
     u = result;
     return control.last_step();
   }
@@ -378,6 +376,7 @@ namespace signorini
   MatrixFreeOperator<dim>::forget_operator()
   {
     multigrid.clear();
+    local_constraints.clear();
     if (fine)
       fine->clear();
     fine.reset();

@@ -13,6 +13,7 @@
 #include <signorini/elasticity/elastic_operator.h>
 #include <signorini/elasticity/linear_solver_parameters.h>
 #include <signorini/elasticity/loads.h>
+#include <signorini/elasticity/local_constraints.h>
 #include <signorini/elasticity/material.h>
 
 #include <cstddef>
@@ -109,7 +110,7 @@ namespace signorini
      * constraints G applied; zero at the held and constrained dofs. */
     void
     newton_residual(const ContactLinearisation<dim> &linearisation,
-                    const VectorType                &u,
+                    const LAVector                  &u,
                     LAVector                        &r) const;
 
     /** CG with multigrid on d; returns the iterations. */
@@ -138,7 +139,9 @@ namespace signorini
     bool                                       levels_ready = false;
     /** The discretisation's constraints plus the held contact nodes. */
     dealii::AffineConstraints<double> constraints;
-    bool                              contact_ready = false;
+    /** distribute() of `constraints` on the fine operator's vectors. */
+    LocalConstraints local_constraints;
+    bool             contact_ready = false;
     std::pair<std::pair<unsigned int, std::size_t>, double> contact_for;
     VectorType                                              load_vector;
     LAVector                                                load_la;
