@@ -43,7 +43,8 @@ namespace signorini
     };
 
     fe_values.reinit(cell);
-    integrate(fe_values, *bc.body_force);
+    if (!vanishes(*bc.body_force))
+      integrate(fe_values, *bc.body_force);
     for (const unsigned int f : cell->face_indices())
       if (cell->face(f)->at_boundary() &&
           bc.traction_ids.count(cell->face(f)->boundary_id()))

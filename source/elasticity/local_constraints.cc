@@ -38,8 +38,8 @@ namespace signorini
           if (!local)
             break;
         }
-    general = Utilities::MPI::logical_or(!local,
-                                         partitioner->get_mpi_communicator());
+    general =
+      Utilities::MPI::logical_or(!local, partitioner->get_mpi_communicator());
     if (general)
       {
         lines.clear();

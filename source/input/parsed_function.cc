@@ -20,7 +20,16 @@ namespace signorini
     : dealii::FunctionParser<dim>(n_components)
     , entry(entry)
     , text(text)
+    , zero(true)
   {
+    for (const auto &expression : parse::split(text, ';'))
+      {
+        std::istringstream in(expression);
+        double             value = 1.;
+        in >> value;
+        if (!in || value != 0. || !(in >> std::ws).eof())
+          zero = false;
+      }
   }
 
   template <int dim>
@@ -121,6 +130,14 @@ namespace signorini
   }
 
   template <int dim>
+  bool
+  vanishes(const dealii::Function<dim> &function)
+  {
+    const auto parsed = dynamic_cast<const ParsedFunction<dim> *>(&function);
+    return parsed && parsed->vanishes();
+  }
+
+  template <int dim>
   void
   check_finite(const dealii::Function<dim> &function, const MPI_Comm comm)
   {
@@ -136,6 +153,10 @@ namespace signorini
   check_finite(const dealii::Function<2> &, const MPI_Comm);
   template void
   check_finite(const dealii::Function<3> &, const MPI_Comm);
+  template bool
+  vanishes(const dealii::Function<2> &);
+  template bool
+  vanishes(const dealii::Function<3> &);
   template std::unique_ptr<dealii::FunctionParser<1>>
   parse_function<1>(const std::string &,
                     unsigned int,

@@ -61,9 +61,10 @@ namespace
    * of a vector of @p partitioner; @p general: whether LocalConstraints
    * fell back to deal.II's on some process. */
   double
-  difference(const AffineConstraints<double> &constraints,
-             const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-             bool &general)
+  difference(
+    const AffineConstraints<double>                          &constraints,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+    bool                                                     &general)
   {
     LocalConstraints local;
     local.reinit(constraints, partitioner);
@@ -128,7 +129,7 @@ main(int argc, char **argv)
     std::cout << "constraint lines (with those of ghost dofs): " << n_lines
               << '\n';
 
-  MatrixFree<3, double> matrix_free;
+  MatrixFree<3, double>                          matrix_free;
   typename MatrixFree<3, double>::AdditionalData data;
   data.mapping_update_flags = update_gradients;
   matrix_free.reinit(MappingQ1<3>(), dofs, hanging, QGauss<1>(2), data);
@@ -140,8 +141,9 @@ main(int argc, char **argv)
     std::cout << "  deal.II's distribute used: " << (general ? "yes" : "no")
               << '\n';
 
-  const auto owned_only = std::make_shared<Utilities::MPI::Partitioner>(
-    dofs.locally_owned_dofs(), MPI_COMM_WORLD);
+  const auto owned_only =
+    std::make_shared<Utilities::MPI::Partitioner>(dofs.locally_owned_dofs(),
+                                                  MPI_COMM_WORLD);
   report("partitioner without ghosts, max difference",
          difference(constraints, owned_only, general),
          1e-14);

@@ -2,6 +2,7 @@
 // the entry and message of the InputError of invalid ones.
 
 #include <signorini/input/input_error.h>
+#include <signorini/input/parsed_function.h>
 
 #include <functional>
 #include <iomanip>
@@ -170,6 +171,15 @@ main()
           return result.str();
         });
       }
+
+  std::cout << "parse_function<2>, vanishes() (loads that are not "
+               "integrated):\n";
+  for (const std::string text :
+       {"0; 0", "0", " 0 ; -0.0 ", "0e5;0", "0; 1e-30", "0*x; 0", "0; 0; 0"})
+    check(text, [](const std::string &t) {
+      const auto f = parse_function<2>(t, 2, "Boundary conditions/Body force");
+      return std::string(vanishes(*f) ? "vanishes" : "does not vanish");
+    });
 
   std::cout << "InputError::at:\n";
   const InputError error = InputError::at("scene.prm:12", "unknown entry");

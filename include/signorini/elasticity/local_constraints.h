@@ -29,8 +29,9 @@ namespace signorini
     /** The owned lines of @p constraints (closed) in the local indices of
      * @p partitioner. Both must outlive this object. */
     void
-    reinit(const dealii::AffineConstraints<double>                     &constraints,
-           const std::shared_ptr<const dealii::Utilities::MPI::Partitioner> &partitioner);
+    reinit(const dealii::AffineConstraints<double> &constraints,
+           const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
+             &partitioner);
 
     /** Sets each owned constrained entry of @p vector (of the partitioner)
      * to its inhomogeneity plus the weighted masters' entries. Collective. */
@@ -57,11 +58,11 @@ namespace signorini
       /** The range of this line's masters in `entries`. */
       unsigned int begin, end;
     };
-    const dealii::AffineConstraints<double> *constraints = nullptr;
-    std::vector<Line>                         lines;
+    const dealii::AffineConstraints<double>     *constraints = nullptr;
+    std::vector<Line>                            lines;
     std::vector<std::pair<unsigned int, double>> entries;
     /** Some master is not local: deal.II's distribute(). */
-    bool                                      general = false;
+    bool general = false;
   };
 } // namespace signorini
 

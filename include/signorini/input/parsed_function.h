@@ -50,7 +50,17 @@ namespace signorini
     void
     check_finite(const MPI_Comm comm) const;
 
+    /** Whether every component's expression is the number 0 (a load that
+     * is not there need not be integrated). */
+    bool
+    vanishes() const
+    {
+      return zero;
+    }
+
   private:
+    /** Each expression of the text is the number 0. */
+    bool               zero;
     const std::string  entry;
     const std::string  text;
     bool               watching = false;
@@ -79,6 +89,12 @@ namespace signorini
   template <int dim>
   void
   check_finite(const dealii::Function<dim> &function, const MPI_Comm comm);
+
+  /** ParsedFunction::vanishes() of @p function if it is a ParsedFunction;
+   * false for other functions. */
+  template <int dim>
+  bool
+  vanishes(const dealii::Function<dim> &function);
 } // namespace signorini
 
 #endif
