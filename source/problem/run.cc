@@ -1,4 +1,5 @@
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/numerics/error_estimator.h>
 
 #include <signorini/base/interruption.h>
@@ -188,11 +189,20 @@ namespace signorini
     const bool                               weighted =
       discretisation.axisymmetric() &&
       parameters.refinement.kelly_weight == Refinement::KellyWeight::revolution;
+    // Read from a deal.II vector: a Trilinos vector looks every entry up
+    // in a hash table.
+    LinearAlgebra::distributed::Vector<double> u(
+      discretisation.locally_owned_dofs(),
+      discretisation.locally_relevant_dofs(),
+      mpi_communicator);
+    for (const auto i : discretisation.locally_owned_dofs())
+      u(i) = solution(i);
+    u.update_ghost_values();
     KellyErrorEstimator<dim>::estimate(discretisation.mapping(),
                                        discretisation.dof_handler(),
                                        discretisation.face_quadrature(),
                                        {},
-                                       solution,
+                                       u,
                                        estimated_error_per_cell,
                                        ComponentMask(),
                                        weighted ? &revolved : nullptr);
