@@ -13,6 +13,7 @@ namespace signorini
   {
     clear();
     constraints       = &given;
+    this->partitioner = partitioner;
     const auto &owned = partitioner->locally_owned_range();
     bool        local = true;
     for (const auto &line : given.get_lines())
@@ -50,12 +51,18 @@ namespace signorini
   void
   LocalConstraints::distribute(VectorType &vector) const
   {
+    Assert(constraints && vector.get_partitioner()->is_compatible(*partitioner),
+           ExcMessage("a vector of another partitioner"));
+    const bool had_ghosts = vector.has_ghost_elements();
     if (general)
       {
+        // deal.II's compresses, which a vector with ghost values forbids.
+        vector.zero_out_ghost_values();
         constraints->distribute(vector);
+        if (had_ghosts)
+          vector.update_ghost_values();
         return;
       }
-    const bool had_ghosts = vector.has_ghost_elements();
     if (!had_ghosts)
       vector.update_ghost_values();
     for (const auto &line : lines)
@@ -75,6 +82,7 @@ namespace signorini
   LocalConstraints::clear()
   {
     constraints = nullptr;
+    partitioner.reset();
     lines.clear();
     entries.clear();
     general = false;

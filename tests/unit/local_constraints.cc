@@ -4,8 +4,9 @@
 // held contact nodes do, on the partitioner of a MatrixFree of the mesh (the
 // fast path: every master is owned or a ghost) and on a partitioner without
 // ghosts (on two processes some masters are then another's: deal.II's
-// distribute() is used). The same entries to round-off, on one process and
-// on two.
+// distribute() is used); each with a vector given without and with its
+// ghost values up to date (which distribute() keeps up to date). The same
+// entries to round-off, on one process and on two.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -22,8 +23,13 @@
 #include <signorini/elasticity/local_constraints.h>
 
 #include "checks.h"
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace dealii;
 using namespace signorini;
@@ -58,25 +64,46 @@ namespace
   }
 
   /** The largest difference of the owned entries after both distribute()s
-   * of a vector of @p partitioner; @p general: whether LocalConstraints
+   * of a vector of @p partitioner, given with its ghost values up to date if
+   * @p ghosted (then also of its ghost entries against deal.II's, and 1 if
+   * they were not kept up to date); @p general: whether LocalConstraints
    * fell back to deal.II's on some process. */
   double
   difference(
     const AffineConstraints<double>                          &constraints,
     const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+    const bool                                                ghosted,
     bool                                                     &general)
   {
     LocalConstraints local;
     local.reinit(constraints, partitioner);
     general = local.falls_back();
-    VectorType ours(partitioner), theirs;
+    VectorType ours(partitioner), theirs(partitioner);
     fill(ours);
-    theirs.reinit(partitioner->locally_owned_range(), MPI_COMM_WORLD);
     theirs = ours;
+    if (ghosted)
+      ours.update_ghost_values();
     local.distribute(ours);
     constraints.distribute(theirs);
+    double ghost_difference = 0.;
+    if (ghosted)
+      {
+        theirs.update_ghost_values();
+        if (!ours.has_ghost_elements())
+          ghost_difference = 1.;
+        for (unsigned int i = 0; i < partitioner->n_ghost_indices(); ++i)
+          {
+            const auto k     = partitioner->locally_owned_size() + i;
+            ghost_difference = std::max(ghost_difference,
+                                        std::abs(ours.local_element(k) -
+                                                 theirs.local_element(k)));
+          }
+        ours.zero_out_ghost_values();
+        theirs.zero_out_ghost_values();
+      }
     theirs -= ours;
-    return theirs.linfty_norm();
+    return std::max(theirs.linfty_norm(),
+                    Utilities::MPI::max(ghost_difference, MPI_COMM_WORLD));
   }
 } // namespace
 
@@ -133,21 +160,25 @@ main(int argc, char **argv)
   typename MatrixFree<3, double>::AdditionalData data;
   data.mapping_update_flags = update_gradients;
   matrix_free.reinit(MappingQ1<3>(), dofs, hanging, QGauss<1>(2), data);
-  bool general = false;
-  report("matrix-free partitioner, max difference",
-         difference(constraints, matrix_free.get_vector_partitioner(), general),
-         1e-14);
-  if (first_process())
-    std::cout << "  deal.II's distribute used: " << (general ? "yes" : "no")
-              << '\n';
-
-  const auto owned_only =
+  // Without ghosts, some masters are another process's.
+  const std::shared_ptr<const Utilities::MPI::Partitioner> owned_only =
     std::make_shared<Utilities::MPI::Partitioner>(dofs.locally_owned_dofs(),
                                                   MPI_COMM_WORLD);
-  report("partitioner without ghosts, max difference",
-         difference(constraints, owned_only, general),
-         1e-14);
-  if (first_process())
-    std::cout << "  deal.II's distribute used: " << (general ? "yes" : "no")
-              << '\n';
+  const std::vector<
+    std::pair<std::string, std::shared_ptr<const Utilities::MPI::Partitioner>>>
+    partitioners = {{"matrix-free partitioner",
+                     matrix_free.get_vector_partitioner()},
+                    {"partitioner without ghosts", owned_only}};
+  for (const auto &[name, partitioner] : partitioners)
+    for (const bool ghosted : {false, true})
+      {
+        bool general = false;
+        report(name + (ghosted ? ", ghost values up to date" : "") +
+                 ", max difference",
+               difference(constraints, partitioner, ghosted, general),
+               1e-14);
+        if (first_process() && !ghosted)
+          std::cout << "  deal.II's distribute used: "
+                    << (general ? "yes" : "no") << '\n';
+      }
 }

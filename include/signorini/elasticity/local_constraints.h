@@ -27,14 +27,15 @@ namespace signorini
     using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
 
     /** The owned lines of @p constraints (closed) in the local indices of
-     * @p partitioner. Both must outlive this object. */
+     * @p partitioner; @p constraints must outlive this object. */
     void
     reinit(const dealii::AffineConstraints<double> &constraints,
            const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
              &partitioner);
 
     /** Sets each owned constrained entry of @p vector (of the partitioner)
-     * to its inhomogeneity plus the weighted masters' entries. Collective. */
+     * to its inhomogeneity plus the weighted masters' entries; its ghost
+     * entries are up to date afterwards if they were before. Collective. */
     void
     distribute(VectorType &vector) const;
 
@@ -58,9 +59,10 @@ namespace signorini
       /** The range of this line's masters in `entries`. */
       unsigned int begin, end;
     };
-    const dealii::AffineConstraints<double>     *constraints = nullptr;
-    std::vector<Line>                            lines;
-    std::vector<std::pair<unsigned int, double>> entries;
+    const dealii::AffineConstraints<double> *constraints = nullptr;
+    std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
+    std::vector<Line>                                          lines;
+    std::vector<std::pair<unsigned int, double>>               entries;
     /** Some master is not local: deal.II's distribute(). */
     bool general = false;
   };

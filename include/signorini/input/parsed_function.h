@@ -59,10 +59,10 @@ namespace signorini
     }
 
   private:
+    const std::string entry;
+    const std::string text;
     /** Each expression of the text is the number 0. */
     bool               zero;
-    const std::string  entry;
-    const std::string  text;
     bool               watching = false;
     mutable std::mutex mutex;
     mutable std::optional<std::pair<dealii::Point<dim>, double>> non_finite;
