@@ -59,16 +59,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize        mpi(argc, argv, 1);
   parallel::distributed::Triangulation<3> mesh(MPI_COMM_WORLD);
-  GridGenerator::hyper_cube(mesh, 0., 1., true);
-  mesh.refine_global(1);
-  // Refine towards a corner three times: levels 1 to 4, hanging nodes.
-  for (unsigned int step = 0; step < 3; ++step)
-    {
-      for (const auto &cell : mesh.active_cell_iterators())
-        if (cell->center().norm() < 0.6)
-          cell->set_refine_flag();
-      mesh.execute_coarsening_and_refinement();
-    }
+  // Refined towards a corner three times: levels 1 to 4, hanging nodes.
+  checks::corner_refined_cube(mesh, 1, 3, 0.6);
 
   const auto ours = coarsening_sequence(mesh);
   const auto dealii =

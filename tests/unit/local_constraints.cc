@@ -98,15 +98,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize        mpi(argc, argv, 1);
   parallel::distributed::Triangulation<3> mesh(MPI_COMM_WORLD);
-  GridGenerator::hyper_cube(mesh, 0., 1., true);
-  mesh.refine_global(2);
-  for (unsigned int step = 0; step < 2; ++step)
-    {
-      for (const auto &cell : mesh.active_cell_iterators())
-        if (cell->center().norm() < 0.5)
-          cell->set_refine_flag();
-      mesh.execute_coarsening_and_refinement();
-    }
+  checks::corner_refined_cube(mesh, 2, 2, 0.5);
   const FESystem<3> fe(FE_Q<3>(1), 3);
   DoFHandler<3>     dofs(mesh);
   dofs.distribute_dofs(fe);
