@@ -1,11 +1,13 @@
 #include <deal.II/base/mpi.h>
 
 #include <signorini/base/interruption.h>
+#include <signorini/base/memory.h>
 #include <signorini/program.h>
 
 int
 main(int argc, char **argv)
 {
+  signorini::tune_allocator();
   // Threads: as many as there are cores per process (one process on two
   // cores estimates errors and builds output patches on both).
   dealii::Utilities::MPI::MPI_InitFinalize mpi(

@@ -17,6 +17,14 @@
 namespace signorini
 {
   void
+  tune_allocator()
+  {
+#if defined(__GLIBC__)
+    mallopt(M_MXFAST, 0);
+#endif
+  }
+
+  void
   release_free_memory()
   {
 #if defined(__GLIBC__)
