@@ -9,7 +9,7 @@ half-space) is shown near it.
 
     pvpython render.py OUTPUT_DIRECTORY IMAGE.png TITLE
 
-Run by scripts/render (headless, under xvfb-run).
+Run by scripts/render (headless, on an Xvfb X server).
 """
 import math
 import sys

@@ -5,21 +5,25 @@ bytes) and link (its target) is the same afterwards, and no file appeared
 or went. Also checks the files the script must have written in its smoke
 folder.
 
-    untouched.py NAME [--plain] [--expect FILE]... [--needs COMMAND]...
-                 -- COMMAND...
+    untouched.py NAME [--plain] [--expect FILE]... [--says TEXT]...
+                 [--needs COMMAND]... -- COMMAND...
 
 COMMAND runs in a fresh folder build/tests/scripts/NAME, which is also its
 SIGNORINI_SMOKE folder (see scripts/common.py), unless --plain: then it runs
 as a user runs it, with no smoke mode. Each --expect FILE (relative
-to that folder) must exist and not be empty afterwards. If a --needs COMMAND
-is not installed, the test is skipped (exit status 77): tests install
-nothing. Prints the script's exit status, its last lines, the changes to the
-repository and the verdicts; exits non-zero if anything failed.
+to that folder) must exist and not be empty afterwards; each --says TEXT
+must be in what the script printed. If a --needs COMMAND is not installed,
+the test is skipped (exit status 77): tests install nothing. COMMAND and
+everything it started are stopped after DEADLINE seconds (270, below
+ctest's limit of 300, so that the verdicts and the script's last lines are
+still printed). Prints the script's exit status, its last lines, the changes
+to the repository and the verdicts; exits non-zero if anything failed.
 """
 import hashlib
 import os
 import resource
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -27,6 +31,29 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 SKIPPED = 77
+DEADLINE = 270
+
+
+def run(command, cwd, env, log):
+    """Runs `command` in a session of its own; returns its exit status, or
+    None if it and all it started were stopped at the deadline."""
+    process = subprocess.Popen(command, cwd=cwd, env=env, stdout=log,
+                               stderr=subprocess.STDOUT,
+                               start_new_session=True)
+    try:
+        return process.wait(timeout=DEADLINE)
+    except subprocess.TimeoutExpired:
+        for signal_, grace in ((signal.SIGTERM, 10), (signal.SIGKILL, 10)):
+            try:
+                os.killpg(process.pid, signal_)
+            except ProcessLookupError:
+                break
+            try:
+                process.wait(timeout=grace)
+                break
+            except subprocess.TimeoutExpired:
+                pass
+        return None
 
 
 def snapshot(skip):
@@ -69,7 +96,7 @@ def main():
     split = arguments.index("--")
     options, command = arguments[1:split], arguments[split + 1:]
     name = arguments[0]
-    expected, needed, plain = [], [], False
+    expected, said, needed, plain = [], [], [], False
     while options:
         if options[0] == "--plain":
             plain = True
@@ -77,6 +104,8 @@ def main():
             continue
         if options[0] == "--expect" and len(options) > 1:
             expected.append(options[1])
+        elif options[0] == "--says" and len(options) > 1:
+            said.append(options[1])
         elif options[0] == "--needs" and len(options) > 1:
             needed.append(options[1])
         else:
@@ -103,19 +132,21 @@ def main():
         del env["SIGNORINI_SMOKE"]
     start = time.monotonic()
     with open(os.path.join(work, "script.log"), "w") as log:
-        status = subprocess.run(command, cwd=work, env=env, stdout=log,
-                                stderr=subprocess.STDOUT).returncode
+        status = run(command, work, env, log)
     seconds = time.monotonic() - start
     usage = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = usage.ru_utime + usage.ru_stime
     after = snapshot([build, os.getcwd()])
 
     failed = status != 0
-    print("%s: exit status %d after %.1f s (%.1f s CPU)" %
+    print("%s: %s after %.1f s (%.1f s CPU)" %
           (" ".join(os.path.relpath(c, ROOT) if c.startswith(ROOT) else c
-                    for c in command), status, seconds, cpu))
-    with open(os.path.join(work, "script.log")) as log:
-        lines = log.read().splitlines()
+                    for c in command),
+           "stopped at the deadline" if status is None else
+           "exit status %d" % status, seconds, cpu))
+    with open(os.path.join(work, "script.log"), errors="replace") as log:
+        text = log.read()
+        lines = text.splitlines()
     for line in lines[-15 if failed else -3:]:
         print("  | " + line)
     changes = sorted(set(before) | set(after))
@@ -139,6 +170,9 @@ def main():
                 written = a.read() != b.read()
         print("written: %s: %s" % (relative, "yes" if written else "NO"))
         failed |= not written
+    for words in said:
+        print("says: %s: %s" % (words, "yes" if words in text else "NO"))
+        failed |= words not in text
     print("FAILED" if failed else "PASSED")
     return 1 if failed else 0
 
