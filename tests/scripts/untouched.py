@@ -34,25 +34,42 @@ SKIPPED = 77
 DEADLINE = 270
 
 
+def session(leader):
+    """The live processes of the session that `leader` leads, whatever
+    process groups they made (as `timeout` does)."""
+    found = []
+    for entry in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open("/proc/%s/stat" % entry) as stat:
+                fields = stat.read().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        if int(fields[3]) == leader and fields[0] != "Z":
+            found.append(int(entry))
+    return found
+
+
 def run(command, cwd, env, log):
     """Runs `command` in a session of its own; returns its exit status, or
-    None if it and all it started were stopped at the deadline."""
+    None if it and all it started were stopped at the deadline (SIGTERM,
+    then SIGKILL 5 s later)."""
     process = subprocess.Popen(command, cwd=cwd, env=env, stdout=log,
                                stderr=subprocess.STDOUT,
                                start_new_session=True)
     try:
         return process.wait(timeout=DEADLINE)
     except subprocess.TimeoutExpired:
-        for signal_, grace in ((signal.SIGTERM, 10), (signal.SIGKILL, 10)):
-            try:
-                os.killpg(process.pid, signal_)
-            except ProcessLookupError:
-                break
-            try:
-                process.wait(timeout=grace)
-                break
-            except subprocess.TimeoutExpired:
-                pass
+        for signal_ in (signal.SIGTERM, signal.SIGKILL):
+            for pid in session(process.pid):
+                try:
+                    os.kill(pid, signal_)
+                except ProcessLookupError:
+                    pass
+            for _ in range(50):
+                if not session(process.pid):
+                    break
+                time.sleep(0.1)
+        process.wait()
         return None
 
 
