@@ -6,6 +6,7 @@
 #include <signorini/elasticity/elastic_level_operator.h>
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace signorini
 {
@@ -50,7 +51,10 @@ namespace signorini
     matrix_of_cell = {};
     cell_dofs      = {};
     direct         = {};
-    constraints    = nullptr;
+    resolved       = {};
+    line_offsets.clear();
+    line_entries.clear();
+    constraints = nullptr;
     constrained.clear();
     identity.clear();
     held.clear();
@@ -164,6 +168,39 @@ namespace signorini
           cell_matrices.apply(matrix_of_cell[cell], x, y);
           for (unsigned int i = 0; i < n; ++i)
             dst.local_element(dofs[i]) += y[i];
+        }
+      else if (!as_given && resolved[cell])
+        {
+          // x = C src, y = K x, dst += C^T y, C the constraints: a
+          // constrained dof is read from, and writes to, its line's dofs.
+          const unsigned int *dofs = &cell_dofs[cell * n];
+          for (unsigned int i = 0; i < n; ++i)
+            if (dofs[i] & constrained_flag)
+              {
+                const unsigned int line  = dofs[i] & ~constrained_flag;
+                double             value = 0.;
+                for (unsigned int e = line_offsets[line];
+                     e < line_offsets[line + 1];
+                     ++e)
+                  value += line_entries[e].second *
+                           src.local_element(line_entries[e].first);
+                x[i] = value;
+              }
+            else
+              x[i] = src.local_element(dofs[i]);
+          cell_matrices.apply(matrix_of_cell[cell], x, y);
+          for (unsigned int i = 0; i < n; ++i)
+            if (dofs[i] & constrained_flag)
+              {
+                const unsigned int line = dofs[i] & ~constrained_flag;
+                for (unsigned int e = line_offsets[line];
+                     e < line_offsets[line + 1];
+                     ++e)
+                  dst.local_element(line_entries[e].first) +=
+                    line_entries[e].second * y[i];
+              }
+            else
+              dst.local_element(dofs[i]) += y[i];
         }
       else
         {
@@ -288,9 +325,13 @@ namespace signorini
     const auto &partitioner = *matrix_free.get_vector_partitioner();
     cell_dofs.assign(matrix_free.n_cell_batches() * n, 0);
     direct.assign(matrix_free.n_cell_batches(), false);
-    Evaluation                           phi(matrix_free);
-    std::vector<double>                  columns(n * n);
-    std::vector<types::global_dof_index> indices(n);
+    resolved.assign(matrix_free.n_cell_batches(), false);
+    line_offsets.assign(1, 0);
+    line_entries.clear();
+    std::unordered_map<types::global_dof_index, unsigned int> line_of;
+    Evaluation                                                phi(matrix_free);
+    std::vector<double>                                       columns(n * n);
+    std::vector<types::global_dof_index>                      indices(n);
     std::vector<std::pair<types::global_dof_index,
                           std::vector<std::pair<unsigned int, double>>>>
       depends;
@@ -314,6 +355,29 @@ namespace signorini
               partitioner.global_to_local(indices[k]);
           }
         direct[cell] = plain && matrix_of_cell[cell] != CellMatrices::none;
+        if (!plain && matrix_of_cell[cell] != CellMatrices::none)
+          {
+            // A constrained dof's entry names its line (stored once, in
+            // local indices) instead of its own index.
+            resolved[cell] = true;
+            for (unsigned int k = 0; k < n; ++k)
+              if (constraints->is_constrained(indices[k]))
+                {
+                  const auto [it, added] =
+                    line_of.emplace(indices[k], line_offsets.size() - 1);
+                  if (added)
+                    {
+                      if (const auto *entries =
+                            constraints->get_constraint_entries(indices[k]))
+                        for (const auto &[master, weight] : *entries)
+                          line_entries.emplace_back(
+                            partitioner.global_to_local(master), weight);
+                      line_offsets.push_back(line_entries.size());
+                    }
+                  cell_dofs[cell * n + position[k]] =
+                    constrained_flag | it->second;
+                }
+          }
         if (plain)
           {
             for (unsigned int k = 0; k < n; ++k)

@@ -154,8 +154,9 @@ namespace signorini
     setup_cell_matrices();
 
     /** dst += K src on @p cells: the `direct` cells by their matrix, the
-     * others through FEEvaluation, which reads @p src with the constraints
-     * resolved, or @p as_given. */
+     * `resolved` ones by their matrix and constraint lines (unless
+     * @p as_given), the others through FEEvaluation, which reads @p src with
+     * the constraints resolved, or @p as_given. */
     template <bool as_given>
     void
     apply_cells(const dealii::MatrixFree<dim, double>       &data,
@@ -190,9 +191,19 @@ namespace signorini
     /** Per cell, its dofs' local vector indices in FEEvaluation's order;
      * used for the cells that have a shape matrix and no constrained dof
      * (`direct`), which are read and written without FEEvaluation. */
-    std::vector<unsigned int>                cell_dofs;
-    std::vector<bool>                        direct;
-    const dealii::AffineConstraints<double> *constraints = nullptr;
+    std::vector<unsigned int> cell_dofs;
+    std::vector<bool>         direct;
+    /** The cells with a shape matrix and constrained dofs (hanging nodes,
+     * Dirichlet dofs), applied as C^T K C without FEEvaluation too: in
+     * cell_dofs, a constrained dof is constrained_flag | the index of its
+     * line, whose (local index, weight) pairs are line_entries from
+     * line_offsets[line] to line_offsets[line + 1] (none for a Dirichlet
+     * dof). */
+    std::vector<bool>                            resolved;
+    std::vector<unsigned int>                    line_offsets;
+    std::vector<std::pair<unsigned int, double>> line_entries;
+    static constexpr unsigned int                constrained_flag = 1u << 31;
+    const dealii::AffineConstraints<double>     *constraints      = nullptr;
     /** Locally owned constrained dofs (local indices). */
     std::vector<unsigned int> constrained;
     /** constrained and the held dofs, sorted. */
