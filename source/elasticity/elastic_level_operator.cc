@@ -51,7 +51,6 @@ namespace signorini
     matrix_of_cell = {};
     cell_dofs      = {};
     direct         = {};
-    resolved       = {};
     line_offsets.clear();
     line_entries.clear();
     constraints = nullptr;
@@ -169,7 +168,7 @@ namespace signorini
           for (unsigned int i = 0; i < n; ++i)
             dst.local_element(dofs[i]) += y[i];
         }
-      else if (!as_given && resolved[cell])
+      else if (!as_given && matrix_of_cell[cell] != CellMatrices::none)
         {
           // x = C src, y = K x, dst += C^T y, C the constraints: a
           // constrained dof is read from, and writes to, its line's dofs.
@@ -325,7 +324,6 @@ namespace signorini
     const auto &partitioner = *matrix_free.get_vector_partitioner();
     cell_dofs.assign(matrix_free.n_cell_batches() * n, 0);
     direct.assign(matrix_free.n_cell_batches(), false);
-    resolved.assign(matrix_free.n_cell_batches(), false);
     line_offsets.assign(1, 0);
     line_entries.clear();
     std::unordered_map<types::global_dof_index, unsigned int> line_of;
@@ -359,7 +357,6 @@ namespace signorini
           {
             // A constrained dof's entry names its line (stored once, in
             // local indices) instead of its own index.
-            resolved[cell] = true;
             for (unsigned int k = 0; k < n; ++k)
               if (constraints->is_constrained(indices[k]))
                 {

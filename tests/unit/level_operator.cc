@@ -67,15 +67,15 @@ namespace
     pattern.compress();
     TrilinosWrappers::SparseMatrix matrix;
     matrix.reinit(pattern);
-    const QGauss<dim>  quadrature(2);
-    FEValues<dim>      values(mapping,
+    const QGauss<dim>                    quadrature(2);
+    FEValues<dim>                        values(mapping,
                          fe,
                          quadrature,
                          update_gradients | update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(n, n);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> indices(n);
-    unsigned int n_plain = 0, n_constrained = 0;
+    unsigned int                         n_plain = 0, n_constrained = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -142,11 +142,12 @@ namespace
     unsigned int n_constrained_dofs = 0;
     for (const auto i : owned)
       n_constrained_dofs += constraints.is_constrained(i);
-    n_constrained_dofs = Utilities::MPI::sum(n_constrained_dofs, MPI_COMM_WORLD);
+    n_constrained_dofs =
+      Utilities::MPI::sum(n_constrained_dofs, MPI_COMM_WORLD);
     if (first_process())
       std::cout << dim << "D: " << dofs.n_dofs() << " dofs, "
-                << n_constrained_dofs << " constrained, "
-                << plain_cells << " cells without and " << constrained_cells
+                << n_constrained_dofs << " constrained, " << plain_cells
+                << " cells without and " << constrained_cells
                 << " with constrained dofs" << std::endl;
     report("free rows against C^T K C (relative)", free_rows, 1e-12);
     report("constrained rows against the identity", identity_rows, 0.);

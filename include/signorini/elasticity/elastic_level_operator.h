@@ -194,12 +194,11 @@ namespace signorini
     std::vector<unsigned int> cell_dofs;
     std::vector<bool>         direct;
     /** The cells with a shape matrix and constrained dofs (hanging nodes,
-     * Dirichlet dofs), applied as C^T K C without FEEvaluation too: in
-     * cell_dofs, a constrained dof is constrained_flag | the index of its
-     * line, whose (local index, weight) pairs are line_entries from
-     * line_offsets[line] to line_offsets[line + 1] (none for a Dirichlet
-     * dof). */
-    std::vector<bool>                            resolved;
+     * Dirichlet dofs; `resolved`: not direct, with a matrix) are applied as
+     * C^T K C without FEEvaluation too: in cell_dofs, a constrained dof is
+     * constrained_flag | the index of its line, whose (local index, weight)
+     * pairs are line_entries from line_offsets[line] to
+     * line_offsets[line + 1] (none for a Dirichlet dof). */
     std::vector<unsigned int>                    line_offsets;
     std::vector<std::pair<unsigned int, double>> line_entries;
     static constexpr unsigned int                constrained_flag = 1u << 31;
