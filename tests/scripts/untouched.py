@@ -6,7 +6,7 @@ or went. Also checks the files the script must have written in its smoke
 folder.
 
     untouched.py NAME [--plain] [--expect FILE]... [--says TEXT]...
-                 [--needs COMMAND]... -- COMMAND...
+                 [--needs COMMAND]... [--deadline SECONDS] -- COMMAND...
 
 COMMAND runs in a fresh folder build/tests/scripts/NAME, which is also its
 SIGNORINI_SMOKE folder (see scripts/common.py), unless --plain: then it runs
@@ -14,9 +14,9 @@ as a user runs it, with no smoke mode. Each --expect FILE (relative
 to that folder) must exist and not be empty afterwards; each --says TEXT
 must be in what the script printed. If a --needs COMMAND is not installed,
 the test is skipped (exit status 77): tests install nothing. COMMAND and
-everything it started are stopped after DEADLINE seconds (270, below
-ctest's limit of 300, so that the verdicts and the script's last lines are
-still printed). Prints the script's exit status, its last lines, the changes
+everything it started are stopped after SECONDS (270 unless --deadline,
+below ctest's limit of 300, so that the verdicts and the script's last lines
+are still printed; then it says how many of its processes were left). Prints the script's exit status, its last lines, the changes
 to the repository and the verdicts; exits non-zero if anything failed.
 """
 import hashlib
@@ -49,15 +49,16 @@ def session(leader):
     return found
 
 
-def run(command, cwd, env, log):
-    """Runs `command` in a session of its own; returns its exit status, or
-    None if it and all it started were stopped at the deadline (SIGTERM,
-    then SIGKILL 5 s later)."""
+def run(command, cwd, env, log, deadline):
+    """Runs `command` in a session of its own; returns its exit status and
+    0, or None and the number of its processes still alive if it and all
+    it started were stopped at the deadline (SIGTERM, then SIGKILL 5 s
+    later)."""
     process = subprocess.Popen(command, cwd=cwd, env=env, stdout=log,
                                stderr=subprocess.STDOUT,
                                start_new_session=True)
     try:
-        return process.wait(timeout=DEADLINE)
+        return process.wait(timeout=deadline), 0
     except subprocess.TimeoutExpired:
         for signal_ in (signal.SIGTERM, signal.SIGKILL):
             for pid in session(process.pid):
@@ -70,7 +71,7 @@ def run(command, cwd, env, log):
                     break
                 time.sleep(0.1)
         process.wait()
-        return None
+        return None, len(session(process.pid))
 
 
 def snapshot(skip):
@@ -113,7 +114,7 @@ def main():
     split = arguments.index("--")
     options, command = arguments[1:split], arguments[split + 1:]
     name = arguments[0]
-    expected, said, needed, plain = [], [], [], False
+    expected, said, needed, plain, deadline = [], [], [], False, DEADLINE
     while options:
         if options[0] == "--plain":
             plain = True
@@ -123,6 +124,8 @@ def main():
             expected.append(options[1])
         elif options[0] == "--says" and len(options) > 1:
             said.append(options[1])
+        elif options[0] == "--deadline" and len(options) > 1:
+            deadline = float(options[1])
         elif options[0] == "--needs" and len(options) > 1:
             needed.append(options[1])
         else:
@@ -149,7 +152,7 @@ def main():
         del env["SIGNORINI_SMOKE"]
     start = time.monotonic()
     with open(os.path.join(work, "script.log"), "w") as log:
-        status = run(command, work, env, log)
+        status, left = run(command, work, env, log, deadline)
     seconds = time.monotonic() - start
     usage = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = usage.ru_utime + usage.ru_stime
@@ -159,7 +162,8 @@ def main():
     print("%s: %s after %.1f s (%.1f s CPU)" %
           (" ".join(os.path.relpath(c, ROOT) if c.startswith(ROOT) else c
                     for c in command),
-           "stopped at the deadline" if status is None else
+           "stopped at the deadline (%d of its processes left)" % left
+           if status is None else
            "exit status %d" % status, seconds, cpu))
     with open(os.path.join(work, "script.log"), errors="replace") as log:
         text = log.read()
