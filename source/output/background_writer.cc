@@ -33,10 +33,14 @@ namespace signorini
     wait();
     if (batch.empty())
       return;
-    running = std::async(std::launch::async, [writes = std::move(batch)]() {
-      for (const auto &write : writes)
-        write();
-    });
+    // The writes (and the data they hold) are freed as soon as they are
+    // done, not when the next launch() or wait() collects the result.
+    running =
+      std::async(std::launch::async, [writes = std::move(batch)]() mutable {
+        for (const auto &write : writes)
+          write();
+        writes.clear();
+      });
     batch.clear();
   }
 
