@@ -209,6 +209,25 @@ namespace signorini
     if (Utilities::MPI::min(consistent ? 1 : 0, comm) == 0)
       return false;
 
+    // A coarse cell's dofs once for the finer cells in a row that it
+    // holds (siblings are consecutive among the active cells).
+    {
+      std::size_t kept = 0;
+      for (std::size_t c = 0; c < pair.embedding.size(); ++c)
+        if (c == 0 || !std::equal(coarse_indices.begin() + c * n,
+                                  coarse_indices.begin() + (c + 1) * n,
+                                  coarse_indices.begin() + kept - n))
+          {
+            std::copy(coarse_indices.begin() + c * n,
+                      coarse_indices.begin() + (c + 1) * n,
+                      coarse_indices.begin() + kept);
+            kept += n;
+            pair.embedding[c] |= new_patch;
+          }
+      coarse_indices.resize(kept);
+      coarse_indices.shrink_to_fit();
+    }
+
     // The coarse values: owned, and the other dofs the patches or the
     // owned constraints read.
     const IndexSet                      &owned = coarse.locally_owned_dofs();
@@ -287,16 +306,21 @@ namespace signorini
 
     const unsigned int n = dofs_per_cell;
     double             x[3 * 8], y[3 * 8];
+    std::size_t        next = 0;
     for (unsigned int c = 0; c < pair.embedding.size(); ++c)
       {
-        const unsigned int *coarse_dofs = &pair.coarse_dofs[c * n];
-        const unsigned int *fine_dofs   = &pair.fine_dofs[c * n];
-        for (unsigned int i = 0; i < n; ++i)
-          x[i] = coarse.local_element(coarse_dofs[i]);
-        const double *values = x;
-        if (pair.embedding[c] != identity)
+        const unsigned int  embedding = pair.embedding[c] & ~new_patch;
+        const unsigned int *fine_dofs = &pair.fine_dofs[c * n];
+        if (pair.embedding[c] & new_patch)
           {
-            embeddings.apply(pair.embedding[c], x, y);
+            for (unsigned int i = 0; i < n; ++i)
+              x[i] = coarse.local_element(pair.coarse_dofs[next + i]);
+            next += n;
+          }
+        const double *values = x;
+        if (embedding != identity)
+          {
+            embeddings.apply(embedding, x, y);
             values = y;
           }
         for (unsigned int i = 0; i < n; ++i)
@@ -326,18 +350,25 @@ namespace signorini
     const unsigned int     n        = dofs_per_cell;
     constexpr unsigned int children = GeometryInfo<dim>::max_children_per_cell;
     double                 x[3 * 8], y[3 * 8];
+    const unsigned int    *coarse_dofs = nullptr;
+    std::size_t            next        = 0;
     for (unsigned int c = 0; c < pair.embedding.size(); ++c)
       {
-        const unsigned int *coarse_dofs = &pair.coarse_dofs[c * n];
-        const unsigned int *fine_dofs   = &pair.fine_dofs[c * n];
+        const unsigned int  embedding = pair.embedding[c] & ~new_patch;
+        const unsigned int *fine_dofs = &pair.fine_dofs[c * n];
+        if (pair.embedding[c] & new_patch)
+          {
+            coarse_dofs = &pair.coarse_dofs[next];
+            next += n;
+          }
         for (unsigned int i = 0; i < n; ++i)
           x[i] = fine_dofs[i] == none ? 0. :
                                         src.local_element(fine_dofs[i]) *
                                           pair.fine_weights[fine_dofs[i]];
         const double *values = x;
-        if (pair.embedding[c] != identity)
+        if (embedding != identity)
           {
-            embeddings.apply(pair.embedding[c] + children, x, y);
+            embeddings.apply(embedding + children, x, y);
             values = y;
           }
         for (unsigned int i = 0; i < n; ++i)

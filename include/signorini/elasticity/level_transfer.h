@@ -31,8 +31,9 @@ namespace signorini
    * It replaces deal.II's MGTwoLevelTransfer, which finds the coarse cells
    * through a table over every cell the mesh's levels could have: 4 bytes
    * times 8^L for L levels, 537 MB at 9 levels (sphere_indentation at
-   * 493,287 dofs) and 4.3 GB at 10, where this one holds 48 indices per
-   * finer cell. deal.II's is kept for meshes that are not nested so.
+   * 493,287 dofs) and 4.3 GB at 10, where this one holds about 28 indices
+   * per finer cell (its 24 dofs, its embedding, its share of its coarse
+   * cell's 24 dofs). deal.II's is kept for meshes that are not nested so.
    */
   template <int dim>
   class LevelTransfer : public dealii::MGTransferBase<
@@ -95,11 +96,15 @@ namespace signorini
     struct CellwisePair
     {
       /** Per owned finer cell: its dofs (local indices, `none` where not
-       * owned here), the coarse cell's (local indices of coarse_values),
-       * and which embedding (a child number, or `identity`). */
+       * owned here) and which embedding (a child number, or `identity`),
+       * `| new_patch` where its coarse cell is not the previous finer
+       * cell's. */
       std::vector<unsigned int> fine_dofs;
-      std::vector<unsigned int> coarse_dofs;
       std::vector<unsigned int> embedding;
+      /** Per coarse cell, in the order of their finer cells: its dofs
+       * (local indices of coarse_values). Siblings come one after the
+       * other, so a parent's dofs are held once, not once per child. */
+      std::vector<unsigned int> coarse_dofs;
       /** 1 / the number of owned finer cells at an owned dof; 0 at
        * constrained dofs. */
       std::vector<double>       fine_weights;
@@ -123,8 +128,9 @@ namespace signorini
                const dealii::AffineConstraints<double> &coarse_constraints,
                const dealii::AffineConstraints<double> &fine_constraints);
 
-    static constexpr unsigned int identity = static_cast<unsigned int>(-1);
-    static constexpr unsigned int none     = static_cast<unsigned int>(-1);
+    static constexpr unsigned int identity  = 0x7fffffffu;
+    static constexpr unsigned int new_patch = 0x80000000u;
+    static constexpr unsigned int none      = static_cast<unsigned int>(-1);
 
     std::function<void(const unsigned int, VectorType &)> initialize;
     /** Indexed by the finer level. */
