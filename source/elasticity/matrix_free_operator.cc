@@ -289,20 +289,25 @@ namespace signorini
     TimerOutput::Scope t(timer, "Solve: CG");
     // u0: the current displacement with the constraints applied; the
     // right-hand side's norm is that of the system for d = u - G(0).
-    LAVector u0, lifting, rhs, reference, d;
+    // (The lifting and its residual are freed before CG takes its memory.)
+    double rhs_norm = 0.;
+    {
+      LAVector lifting, reference;
+      fine->initialize_dof_vector(lifting);
+      fine->initialize_dof_vector(reference);
+      local_constraints.distribute(lifting);
+      newton_residual(linearisation, lifting, reference);
+      rhs_norm = reference.l2_norm();
+    }
+    LAVector u0, rhs, d;
     fine->initialize_dof_vector(u0);
-    fine->initialize_dof_vector(lifting);
     to_la(u, u0);
     local_constraints.distribute(u0);
-    local_constraints.distribute(lifting);
     fine->initialize_dof_vector(rhs);
-    fine->initialize_dof_vector(reference);
     fine->initialize_dof_vector(d);
-    newton_residual(linearisation, lifting, reference);
     newton_residual(linearisation, u0, rhs);
     rhs *= -1.;
 
-    const double rhs_norm = reference.l2_norm();
     const double relative =
       final_step ? parameters.tolerance : parameters.newton_tolerance;
     double tolerance = relative * rhs_norm;
