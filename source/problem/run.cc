@@ -1,12 +1,12 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/la_parallel_vector.h>
-#include <deal.II/numerics/error_estimator.h>
 
 #include <signorini/base/interruption.h>
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
 #include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/rigid_motions.h>
+#include <signorini/mesh_adaptation/kelly_indicator.h>
 #include <signorini/problem/contact_problem.h>
 
 #include <chrono>
@@ -198,14 +198,12 @@ namespace signorini
     for (const auto i : discretisation.locally_owned_dofs())
       u(i) = solution(i);
     u.update_ghost_values();
-    KellyErrorEstimator<dim>::estimate(discretisation.mapping(),
-                                       discretisation.dof_handler(),
-                                       discretisation.face_quadrature(),
-                                       {},
-                                       u,
-                                       estimated_error_per_cell,
-                                       ComponentMask(),
-                                       weighted ? &revolved : nullptr);
+    estimate_kelly_indicators(discretisation.mapping(),
+                              discretisation.dof_handler(),
+                              discretisation.face_quadrature(),
+                              u,
+                              weighted ? &revolved : nullptr,
+                              estimated_error_per_cell);
   }
 
   template <int dim>
