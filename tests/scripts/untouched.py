@@ -16,8 +16,9 @@ must be in what the script printed. If a --needs COMMAND is not installed,
 the test is skipped (exit status 77): tests install nothing. COMMAND and
 everything it started are stopped after SECONDS (270 unless --deadline,
 below ctest's limit of 300, so that the verdicts and the script's last lines
-are still printed; then it says how many of its processes were left). Prints the script's exit status, its last lines, the changes
-to the repository and the verdicts; exits non-zero if anything failed.
+are still printed; then it says how many of its processes were left).
+Prints the script's exit status, its last lines, the changes to the
+repository and the verdicts; exits non-zero if anything failed.
 """
 import hashlib
 import os

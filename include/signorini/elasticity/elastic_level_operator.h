@@ -188,9 +188,10 @@ namespace signorini
     CellMatrices cell_matrices;
     /** The matrix of each cell, or CellMatrices::none. */
     std::vector<unsigned int> matrix_of_cell;
-    /** Per cell, its dofs' local vector indices in FEEvaluation's order;
-     * used for the cells that have a shape matrix and no constrained dof
-     * (`direct`), which are read and written without FEEvaluation. */
+    /** Per cell, its dofs' local vector indices in FEEvaluation's order,
+     * for every cell with a shape matrix, which is read and written
+     * without FEEvaluation: `direct` if none of its dofs is constrained,
+     * else `resolved` (below). */
     std::vector<unsigned int> cell_dofs;
     std::vector<bool>         direct;
     /** The cells with a shape matrix and constrained dofs (hanging nodes,
