@@ -1,8 +1,10 @@
 // estimate_kelly_indicators against deal.II's KellyErrorEstimator, on one
 // process and on two: a smooth displacement on a cube whose cells are
 // warped (no two faces parallel) and refined towards a corner (hanging
-// nodes, faces between processes), in 3D; and in 2D on a warped square with
-// the weight of the axisymmetric model as the coefficient. Every locally
+// nodes, faces between processes), and on a Moebius loop (faces that meet
+// rotated, so that each side orders the face's points differently), in 3D;
+// and in 2D on a warped square, also with the weight of the axisymmetric
+// model as the coefficient. Every locally
 // owned cell's indicator must agree to the rounding of a float; the
 // indicators' norm is printed so that zeros on both sides would show.
 
@@ -26,8 +28,10 @@
 
 #include "checks.h"
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <iostream>
+#include <string>
 
 using namespace dealii;
 using namespace signorini;
@@ -61,6 +65,24 @@ namespace
     }
   };
 
+  /** Refines the cells within @p radius of @p centre, twice: hanging
+   * nodes. */
+  template <int dim>
+  void
+  refine_near(parallel::distributed::Triangulation<dim> &mesh,
+              const Point<dim>                          &centre,
+              const double                               radius)
+  {
+    for (unsigned int step = 0; step < 2; ++step)
+      {
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              cell->center().distance(centre) < radius)
+            cell->set_refine_flag();
+        mesh.execute_coarsening_and_refinement();
+      }
+  }
+
   /** Moves every vertex of the unit cube smoothly: no cell is a
    * parallelepiped. */
   template <int dim>
@@ -73,21 +95,46 @@ namespace
     return q;
   }
 
+  /** The unit cube, refined twice, warped, then refined twice more near
+   * the origin. */
   template <int dim>
   void
-  compare(const Function<dim> *coefficient)
+  warped_cube(parallel::distributed::Triangulation<dim> &mesh)
   {
-    parallel::distributed::Triangulation<dim> mesh(MPI_COMM_WORLD);
     GridGenerator::hyper_cube(mesh, 0., 1.);
     mesh.refine_global(2);
     GridTools::transform(&warp<dim>, mesh);
-    for (unsigned int step = 0; step < 2; ++step)
-      {
-        for (const auto &cell : mesh.active_cell_iterators())
-          if (cell->is_locally_owned() && cell->center().norm() < 0.5)
-            cell->set_refine_flag();
-        mesh.execute_coarsening_and_refinement();
-      }
+    refine_near(mesh, Point<dim>(), 0.5);
+  }
+
+  /** A ring of 8 cells twisted by a quarter turn before it is closed: the
+   * faces where it closes meet rotated, which the points on either side
+   * must follow. Refined once, then twice more near one side. */
+  void
+  moebius_loop(parallel::distributed::Triangulation<3> &mesh)
+  {
+    GridGenerator::moebius(mesh, 8, 1, 1., 0.3);
+    mesh.refine_global(1);
+    refine_near(mesh, Point<3>(1., 0., 0.), 0.6);
+  }
+
+  template <int dim>
+  void
+  compare(const std::string &name,
+          const std::function<void(parallel::distributed::Triangulation<dim> &)>
+                              &make_mesh,
+          const Function<dim> *coefficient)
+  {
+    parallel::distributed::Triangulation<dim> mesh(MPI_COMM_WORLD);
+    make_mesh(mesh);
+    // Faces seen from a cell in other than the standard orientation.
+    unsigned int turned = 0;
+    for (const auto &cell : mesh.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          turned += !cell->face_orientation(f) || cell->face_flip(f) ||
+                    cell->face_rotation(f);
+    turned = Utilities::MPI::sum(turned, MPI_COMM_WORLD);
 
     const FESystem<dim> fe(FE_Q<dim>(1), dim);
     DoFHandler<dim>     dofs(mesh);
@@ -121,7 +168,8 @@ namespace
     largest    = Utilities::MPI::max(largest, MPI_COMM_WORLD);
     squares    = Utilities::MPI::sum(squares, MPI_COMM_WORLD);
     if (first_process())
-      std::cout << dim << "D, " << mesh.n_global_active_cells() << " cells"
+      std::cout << name << ", " << mesh.n_global_active_cells() << " cells, "
+                << turned << " faces turned"
                 << (coefficient ? ", weighted by 2 pi r" : "")
                 << ": norm of the indicators " << std::setprecision(6)
                 << std::sqrt(squares) << '\n';
@@ -135,8 +183,9 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  compare<3>(nullptr);
-  compare<2>(nullptr);
+  compare<3>("3D warped cube", &warped_cube<3>, nullptr);
+  compare<3>("3D Moebius loop", &moebius_loop, nullptr);
+  compare<2>("2D warped square", &warped_cube<2>, nullptr);
   const axisymmetry::KellyCoefficient<2> revolved;
-  compare<2>(&revolved);
+  compare<2>("2D warped square", &warped_cube<2>, &revolved);
 }
