@@ -32,10 +32,10 @@ int
 main()
 {
   using Type = LinearSolverParameters::Type;
-  for (const auto [type, label] : {std::pair{Type::automatic, "automatic"},
-                                   std::pair{Type::matrix_free, "matrix-free"},
-                                   std::pair{Type::direct, "direct"},
-                                   std::pair{Type::amg_cg, "amg cg"}})
+  for (const auto &[type, label] : {std::pair{Type::automatic, "automatic"},
+                                    std::pair{Type::matrix_free, "matrix-free"},
+                                    std::pair{Type::direct, "direct"},
+                                    std::pair{Type::amg_cg, "amg cg"}})
     {
       LinearSolverParameters parameters;
       parameters.type = type;

@@ -63,14 +63,14 @@ main()
     show(name, bytes, text_check::first_unexpected);
 
   std::cout << "printable:\n";
-  for (const std::string text : {std::string("plain \xce\xbd \xc3\x97"),
-                                 std::string("tab\there"),
-                                 std::string("nul\0cut", 7),
-                                 std::string("esc\x1b[31mred"),
-                                 std::string("bytes \xff\xfe end"),
-                                 "no-break" + nbsp + "space",
-                                 "bom" + bom,
-                                 std::string("DEL\x7f")})
+  for (const std::string &text : {std::string("plain \xce\xbd \xc3\x97"),
+                                  std::string("tab\there"),
+                                  std::string("nul\0cut", 7),
+                                  std::string("esc\x1b[31mred"),
+                                  std::string("bytes \xff\xfe end"),
+                                  "no-break" + nbsp + "space",
+                                  "bom" + bom,
+                                  std::string("DEL\x7f")})
     std::cout << "  [" << text_check::printable(text) << "]\n";
   std::string long_text;
   for (unsigned int i = 0; i < 1000; ++i)
