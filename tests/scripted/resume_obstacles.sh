@@ -6,5 +6,5 @@ SCENE=("subsection Obstacle" "  set Type   = plane" "  set Height = 0"
   "  set Point  = 0, -0.15" "  set Normal = 0.02, 1" "end"
   "subsection Obstacle 2" "  set Type   = plane" "  set Point  = 10.005, 0"
   "  set Normal = -1, 0" "end")
-CYCLES=4
+CYCLES=4 KILL_AFTER=1
 resume_test mpirun -np 2
