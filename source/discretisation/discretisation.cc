@@ -339,6 +339,20 @@ namespace signorini
     return communicator;
   }
 
+  template <int dim>
+  LinearAlgebra::distributed::Vector<double>
+  Discretisation<dim>::relevant_copy(
+    const TrilinosWrappers::MPI::Vector &vector) const
+  {
+    LinearAlgebra::distributed::Vector<double> copy(owned_dofs,
+                                                    relevant_dofs,
+                                                    communicator);
+    for (const auto i : owned_dofs)
+      copy(i) = vector(i);
+    copy.update_ghost_values();
+    return copy;
+  }
+
   template class Discretisation<2>;
   template class Discretisation<3>;
 } // namespace signorini

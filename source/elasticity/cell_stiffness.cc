@@ -1,4 +1,5 @@
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/lac/la_parallel_vector.h>
 
 #include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/cell_stiffness.h>
@@ -77,13 +78,13 @@ namespace signorini
 
     /** cell_internal_force() of an axisymmetric model's cell, with or
      * without @p mean_dilatation; returns the strain energy. */
-    template <int dim>
+    template <int dim, typename VectorType>
     double
     revolved_internal_force(const Material      &material,
                             const bool           mean_dilatation,
                             const FEValues<dim> &fe_values,
-                            const TrilinosWrappers::MPI::Vector &u,
-                            Vector<double>                      &internal)
+                            const VectorType    &u,
+                            Vector<double>      &internal)
     {
       const FEValuesExtractors::Vector     displacement(0);
       const unsigned int                   n_q = fe_values.n_quadrature_points;
@@ -273,12 +274,12 @@ namespace signorini
     return scaled;
   }
 
-  template <int dim>
+  template <int dim, typename VectorType>
   double
-  cell_internal_force(const Material                      &material,
-                      const FEValues<dim>                 &fe_values,
-                      const TrilinosWrappers::MPI::Vector &u,
-                      Vector<double>                      &internal)
+  cell_internal_force(const Material      &material,
+                      const FEValues<dim> &fe_values,
+                      const VectorType    &u,
+                      Vector<double>      &internal)
   {
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
@@ -338,5 +339,15 @@ namespace signorini
   cell_internal_force(const Material &,
                       const FEValues<3> &,
                       const TrilinosWrappers::MPI::Vector &,
+                      Vector<double> &);
+  template double
+  cell_internal_force(const Material &,
+                      const FEValues<2> &,
+                      const LinearAlgebra::distributed::Vector<double> &,
+                      Vector<double> &);
+  template double
+  cell_internal_force(const Material &,
+                      const FEValues<3> &,
+                      const LinearAlgebra::distributed::Vector<double> &,
                       Vector<double> &);
 } // namespace signorini

@@ -34,6 +34,8 @@ namespace signorini
     Vector<double>                       cell_load(n), internal(n);
     std::vector<types::global_dof_index> dof_indices(n);
 
+    const auto displacement = discretisation.relevant_copy(u);
+
     Tensor<1, dim> applied, reaction;
     double         energy = 0.;
     for (const auto &cell :
@@ -41,13 +43,14 @@ namespace signorini
       if (cell->is_locally_owned())
         {
           loads.cell_load(cell, fe_values, fe_face_values, cell_load);
-          energy += cell_internal_force(material, fe_values, u, internal);
+          energy +=
+            cell_internal_force(material, fe_values, displacement, internal);
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < n; ++i)
             {
               const unsigned int d = fe.system_to_component_index(i).first;
               applied[d] += cell_load(i);
-              energy -= cell_load(i) * u(dof_indices[i]);
+              energy -= cell_load(i) * displacement(dof_indices[i]);
               // A hanging node's force goes to its masters, some of which
               // may be supported even if it is not.
               const double force = internal(i) - cell_load(i);

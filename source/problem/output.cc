@@ -54,8 +54,9 @@ namespace signorini
   void
   ContactProblem<dim>::record_statistics(const unsigned int cycle)
   {
-    const char   *axes = "xyz";
-    StatisticsRow row;
+    TimerOutput::Scope t(timer, "Output: statistics");
+    const char        *axes = "xyz";
+    StatisticsRow      row;
     row.add_count("cycle", cycle);
     row.add_count("cells",
                   discretisation.triangulation().n_global_active_cells());

@@ -189,15 +189,7 @@ namespace signorini
     const bool                               weighted =
       discretisation.axisymmetric() &&
       parameters.refinement.kelly_weight == Refinement::KellyWeight::revolution;
-    // Read from a deal.II vector: a Trilinos vector looks every entry up
-    // in a hash table.
-    LinearAlgebra::distributed::Vector<double> u(
-      discretisation.locally_owned_dofs(),
-      discretisation.locally_relevant_dofs(),
-      mpi_communicator);
-    for (const auto i : discretisation.locally_owned_dofs())
-      u(i) = solution(i);
-    u.update_ghost_values();
+    const auto u = discretisation.relevant_copy(solution);
     estimate_kelly_indicators(discretisation.mapping(),
                               discretisation.dof_handler(),
                               discretisation.face_quadrature(),

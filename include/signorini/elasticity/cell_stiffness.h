@@ -88,14 +88,15 @@ namespace signorini
 
   /** The internal force vector of the cell @p fe_values was reinit'ed on
    * (with the flags of elastic_update_flags()), the integral of
-   * eps(phi_i) : sigma(u) [N], for the ghosted displacement @p u; returns the
+   * eps(phi_i) : sigma(u) [N], for the ghosted displacement @p u (a
+   * Trilinos or a deal.II vector, the latter faster to read); returns the
    * cell's strain energy 1/2 a(u,u) [N mm]. */
-  template <int dim>
+  template <int dim, typename VectorType>
   double
-  cell_internal_force(const Material                              &material,
-                      const dealii::FEValues<dim>                 &fe_values,
-                      const dealii::TrilinosWrappers::MPI::Vector &u,
-                      dealii::Vector<double>                      &internal);
+  cell_internal_force(const Material              &material,
+                      const dealii::FEValues<dim> &fe_values,
+                      const VectorType            &u,
+                      dealii::Vector<double>      &internal);
 } // namespace signorini
 
 #endif
