@@ -71,7 +71,7 @@ namespace signorini
 
     /** One side of a face at the face's points: each component's
      * derivative along this side's outward normal and, for the side that
-     * integrates, the measure and the points. */
+     * integrates, the measure and (with a coefficient) the points. */
     template <int dim>
     struct Side
     {
@@ -222,10 +222,14 @@ namespace signorini
               {
                 side.JxW[q] =
                   std::abs(det) * length * table.weights[offset + q];
-                Point<dim> x;
-                for (unsigned int v = 0; v < n_vertices; ++v)
-                  x += table.values[offset + q][v] * vertices[v];
-                side.points[q] = x;
+                // The points only for a coefficient to be evaluated at.
+                if (coefficient)
+                  {
+                    Point<dim> x;
+                    for (unsigned int v = 0; v < n_vertices; ++v)
+                      x += table.values[offset + q][v] * vertices[v];
+                    side.points[q] = x;
+                  }
               }
           }
       }

@@ -181,8 +181,6 @@ namespace signorini
   ContactProblem<dim>::estimate_error()
   {
     TimerOutput::Scope t(timer, "Refine: error estimate");
-    estimated_error_per_cell.reinit(
-      discretisation.triangulation().n_active_cells());
     // Weighted by 2 pi r in an axisymmetric model, as its energy norm is,
     // unless the scene asks for the error of the section.
     const axisymmetry::KellyCoefficient<dim> revolved;
