@@ -143,6 +143,9 @@ namespace signorini
             timings.linear_solve = time_linear_solve();
             write_timings(timings);
           }
+        // The solution file's arrays are free (unless the background
+        // writer still holds them) before the checkpoint packs the mesh.
+        release_free_memory();
         save_checkpoint(cycle, run_time);
         background_writer.launch();
         release_free_memory();
