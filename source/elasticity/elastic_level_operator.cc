@@ -26,20 +26,37 @@ namespace signorini
                                     const AffineConstraints<double> &given)
   {
     constraints = &given;
+    dof_handler = &dofs;
+    released    = false;
     typename MatrixFree<dim, double>::AdditionalData data;
     data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
     data.mapping_update_flags  = update_gradients | update_JxW_values;
     matrix_free.reinit(mapping, dofs, given, QGauss<1>(2), data);
+    partitioner = matrix_free.get_vector_partitioner();
     setup_cell_matrices();
 
-    const auto &partitioner = *matrix_free.get_vector_partitioner();
     constrained.clear();
     for (const auto i : dofs.locally_owned_dofs())
       if (given.is_constrained(i))
-        constrained.push_back(partitioner.global_to_local(i));
+        constrained.push_back(partitioner->global_to_local(i));
     compute_diagonal();
-    matrix_free.initialize_dof_vector(projected);
+    initialize_dof_vector(projected);
     set_contact({}, {});
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::release_matrix_free()
+  {
+    const bool all_matrices =
+      std::find(matrix_of_cell.begin(),
+                matrix_of_cell.end(),
+                CellMatrices::none) == matrix_of_cell.end();
+    if (released || Utilities::MPI::logical_or(!all_matrices,
+                                               dof_handler->get_communicator()))
+      return;
+    matrix_free.clear();
+    released = true;
   }
 
   template <int dim>
@@ -53,7 +70,11 @@ namespace signorini
     direct         = {};
     line_offsets.clear();
     line_entries.clear();
+    line_dof.clear();
     constraints = nullptr;
+    dof_handler = nullptr;
+    partitioner.reset();
+    released = false;
     constrained.clear();
     identity.clear();
     held.clear();
@@ -155,9 +176,11 @@ namespace signorini
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
   {
-    Evaluation             phi(data);
-    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
-    double                 x[n], y[n];
+    // Only the cells without a shape matrix need FEEvaluation (none once
+    // release_matrix_free() freed the MatrixFree).
+    std::unique_ptr<Evaluation> phi;
+    constexpr unsigned int      n = Evaluation::static_dofs_per_cell;
+    double                      x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
       if (direct[cell])
         {
@@ -168,16 +191,22 @@ namespace signorini
           for (unsigned int i = 0; i < n; ++i)
             dst.local_element(dofs[i]) += y[i];
         }
-      else if (!as_given && matrix_of_cell[cell] != CellMatrices::none)
+      else if (matrix_of_cell[cell] != CellMatrices::none)
         {
-          // x = C src, y = K x, dst += C^T y, C the constraints: a
-          // constrained dof is read from, and writes to, its line's dofs.
+          // x = C src (src itself if @p as_given), y = K x, dst += C^T y,
+          // C the constraints: a constrained dof is read from, and writes
+          // to, its line's dofs.
           const unsigned int *dofs = &cell_dofs[cell * n];
           for (unsigned int i = 0; i < n; ++i)
             if (dofs[i] & constrained_flag)
               {
-                const unsigned int line  = dofs[i] & ~constrained_flag;
-                double             value = 0.;
+                const unsigned int line = dofs[i] & ~constrained_flag;
+                if (as_given)
+                  {
+                    x[i] = src.local_element(line_dof[line]);
+                    continue;
+                  }
+                double value = 0.;
                 for (unsigned int e = line_offsets[line];
                      e < line_offsets[line + 1];
                      ++e)
@@ -203,14 +232,42 @@ namespace signorini
         }
       else
         {
-          phi.reinit(cell);
+          if (!phi)
+            phi = std::make_unique<Evaluation>(data);
+          phi->reinit(cell);
           if (as_given)
-            phi.read_dof_values_plain(src);
+            phi->read_dof_values_plain(src);
           else
-            phi.read_dof_values(src);
-          apply_cell(phi);
-          phi.distribute_local_to_global(dst);
+            phi->read_dof_values(src);
+          apply_cell(*phi);
+          phi->distribute_local_to_global(dst);
         }
+  }
+
+  template <int dim>
+  template <bool as_given>
+  void
+  ElasticLevelOperator<dim>::cell_loop(VectorType       &dst,
+                                       const VectorType &src) const
+  {
+    if (!released)
+      {
+        if (as_given)
+          matrix_free.cell_loop(
+            &ElasticLevelOperator::local_internal_force, this, dst, src, true);
+        else
+          matrix_free.cell_loop(
+            &ElasticLevelOperator::local_apply, this, dst, src, true);
+        return;
+      }
+    const bool had_ghosts = src.has_ghost_elements();
+    if (!had_ghosts)
+      src.update_ghost_values();
+    dst = 0.;
+    apply_cells<as_given>(matrix_free, dst, src, {0, matrix_of_cell.size()});
+    dst.compress(VectorOperation::add);
+    if (!had_ghosts)
+      src.zero_out_ghost_values();
   }
 
   template <int dim>
@@ -255,8 +312,7 @@ namespace signorini
           }
         input = &projected;
       }
-    matrix_free.cell_loop(
-      &ElasticLevelOperator::local_apply, this, dst, *input, true);
+    cell_loop<false>(dst, *input);
     // P^T: a held row's force goes to the dofs it is solved from.
     for (const auto &[dof, entries] : held)
       for (const auto &[master, weight] : entries)
@@ -284,8 +340,7 @@ namespace signorini
   ElasticLevelOperator<dim>::internal_force(VectorType       &dst,
                                             const VectorType &u) const
   {
-    matrix_free.cell_loop(
-      &ElasticLevelOperator::local_internal_force, this, dst, u, true);
+    cell_loop<true>(dst, u);
     for (const unsigned int i : constrained)
       dst.local_element(i) = 0.;
   }
@@ -320,12 +375,12 @@ namespace signorini
         const auto [component, node] = fe.system_to_component_index(k);
         position[k]                  = component * (n / dim) + node;
       }
-    matrix_free.initialize_dof_vector(diagonal_without_contact);
-    const auto &partitioner = *matrix_free.get_vector_partitioner();
+    initialize_dof_vector(diagonal_without_contact);
     cell_dofs.assign(matrix_free.n_cell_batches() * n, 0);
     direct.assign(matrix_free.n_cell_batches(), false);
     line_offsets.assign(1, 0);
     line_entries.clear();
+    line_dof.clear();
     std::unordered_map<types::global_dof_index, unsigned int> line_of;
     Evaluation                                                phi(matrix_free);
     std::vector<double>                                       columns(n * n);
@@ -350,7 +405,7 @@ namespace signorini
           {
             plain = plain && !constraints->is_constrained(indices[k]);
             cell_dofs[cell * n + position[k]] =
-              partitioner.global_to_local(indices[k]);
+              partitioner->global_to_local(indices[k]);
           }
         direct[cell] = plain && matrix_of_cell[cell] != CellMatrices::none;
         if (!plain && matrix_of_cell[cell] != CellMatrices::none)
@@ -364,11 +419,13 @@ namespace signorini
                     line_of.emplace(indices[k], line_offsets.size() - 1);
                   if (added)
                     {
+                      line_dof.push_back(
+                        partitioner->global_to_local(indices[k]));
                       if (const auto *entries =
                             constraints->get_constraint_entries(indices[k]))
                         for (const auto &[master, weight] : *entries)
                           line_entries.emplace_back(
-                            partitioner.global_to_local(master), weight);
+                            partitioner->global_to_local(master), weight);
                       line_offsets.push_back(line_entries.size());
                     }
                   cell_dofs[cell * n + position[k]] =
@@ -420,14 +477,13 @@ namespace signorini
   ElasticLevelOperator<dim>::set_contact(std::vector<HeldLine>   held_lines,
                                          std::vector<NodalBlock> nodal_blocks)
   {
-    const auto &partitioner = *matrix_free.get_vector_partitioner();
     held.clear();
     for (const auto &line : held_lines)
       {
         std::vector<std::pair<unsigned int, double>> entries;
         for (const auto &[master, weight] : line.entries)
-          entries.emplace_back(partitioner.global_to_local(master), weight);
-        held.emplace_back(partitioner.global_to_local(line.dof), entries);
+          entries.emplace_back(partitioner->global_to_local(master), weight);
+        held.emplace_back(partitioner->global_to_local(line.dof), entries);
       }
     identity = constrained;
     for (const auto &line : held)
@@ -441,7 +497,7 @@ namespace signorini
         std::array<bool, dim>         acting;
         for (unsigned int a = 0; a < dim; ++a)
           {
-            local[a] = partitioner.global_to_local(block.dofs[a]);
+            local[a] = partitioner->global_to_local(block.dofs[a]);
             acting[a] =
               !std::binary_search(identity.begin(), identity.end(), local[a]);
           }
@@ -488,7 +544,8 @@ namespace signorini
   ElasticLevelOperator<dim>::assemble_matrix(
     TrilinosWrappers::SparseMatrix &matrix) const
   {
-    const auto    &dofs = matrix_free.get_dof_handler();
+    AssertThrow(!released, ExcInternalError());
+    const auto    &dofs = *dof_handler;
     const MPI_Comm comm = dofs.get_communicator();
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
@@ -509,13 +566,12 @@ namespace signorini
                                     &ElasticLevelOperator::apply_cell,
                                     this);
     // The contact of a coarse level: nodal blocks, no held lines.
-    const auto &partitioner = *matrix_free.get_vector_partitioner();
     for (const auto &[dofs_of, stiffness] : blocks)
       for (unsigned int a = 0; a < dim; ++a)
         for (unsigned int b = 0; b < dim; ++b)
           if (stiffness[a][b] != 0.)
-            matrix.add(partitioner.local_to_global(dofs_of[a]),
-                       partitioner.local_to_global(dofs_of[b]),
+            matrix.add(partitioner->local_to_global(dofs_of[a]),
+                       partitioner->local_to_global(dofs_of[b]),
                        stiffness[a][b]);
     matrix.compress(VectorOperation::add);
   }
@@ -524,7 +580,7 @@ namespace signorini
   void
   ElasticLevelOperator<dim>::initialize_dof_vector(VectorType &vector) const
   {
-    matrix_free.initialize_dof_vector(vector);
+    vector.reinit(partitioner);
   }
 
   template <int dim>
@@ -540,7 +596,7 @@ namespace signorini
   types::global_dof_index
   ElasticLevelOperator<dim>::m() const
   {
-    return matrix_free.get_dof_handler().n_dofs();
+    return dof_handler->n_dofs();
   }
 
   template <int dim>
@@ -554,7 +610,7 @@ namespace signorini
   const DoFHandler<dim> &
   ElasticLevelOperator<dim>::get_dof_handler() const
   {
-    return matrix_free.get_dof_handler();
+    return *dof_handler;
   }
 
   template class ElasticLevelOperator<2>;

@@ -138,8 +138,14 @@ namespace signorini
         level_constraints.close();
         operators[level] = std::make_shared<LevelOperator>(material);
         operators[level]->reinit(mapping, *dofs.back(), level_constraints);
+        // All but the coarsest level (whose matrix is assembled) apply
+        // their cells without deal.II's MatrixFree where they can.
+        if (level > 0)
+          operators[level]->release_matrix_free();
       }
     operators[top] = fine;
+    if (top > 0)
+      fine->release_matrix_free();
 
     std::vector<const DoFHandler<dim> *>           level_dofs;
     std::vector<const AffineConstraints<double> *> level_constraints;
