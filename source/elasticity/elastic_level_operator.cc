@@ -250,16 +250,8 @@ namespace signorini
   ElasticLevelOperator<dim>::cell_loop(VectorType       &dst,
                                        const VectorType &src) const
   {
-    if (!released)
-      {
-        if (as_given)
-          matrix_free.cell_loop(
-            &ElasticLevelOperator::local_internal_force, this, dst, src, true);
-        else
-          matrix_free.cell_loop(
-            &ElasticLevelOperator::local_apply, this, dst, src, true);
-        return;
-      }
+    // As MatrixFree::cell_loop() does it, which the levels that freed the
+    // MatrixFree cannot call.
     const bool had_ghosts = src.has_ghost_elements();
     if (!had_ghosts)
       src.update_ghost_values();
@@ -268,28 +260,6 @@ namespace signorini
     dst.compress(VectorOperation::add);
     if (!had_ghosts)
       src.zero_out_ghost_values();
-  }
-
-  template <int dim>
-  void
-  ElasticLevelOperator<dim>::local_apply(
-    const MatrixFree<dim, double>               &data,
-    VectorType                                  &dst,
-    const VectorType                            &src,
-    const std::pair<unsigned int, unsigned int> &cells) const
-  {
-    apply_cells<false>(data, dst, src, cells);
-  }
-
-  template <int dim>
-  void
-  ElasticLevelOperator<dim>::local_internal_force(
-    const MatrixFree<dim, double>               &data,
-    VectorType                                  &dst,
-    const VectorType                            &src,
-    const std::pair<unsigned int, unsigned int> &cells) const
-  {
-    apply_cells<true>(data, dst, src, cells);
   }
 
   template <int dim>

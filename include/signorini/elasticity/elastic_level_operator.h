@@ -176,25 +176,12 @@ namespace signorini
                 const VectorType                            &src,
                 const std::pair<unsigned int, unsigned int> &cells) const;
 
-    /** dst = K src over all cells, as MatrixFree::cell_loop() does it
-     * (src's ghosts imported for the loop, dst's added to their owners),
-     * with the cells' own loop once release_matrix_free() freed it. */
+    /** dst = K src (or as given) over all cells: src's ghosts imported for
+     * the loop, dst's added to their owners. */
     template <bool as_given>
     void
     cell_loop(VectorType &dst, const VectorType &src) const;
 
-    void
-    local_apply(const dealii::MatrixFree<dim, double>       &data,
-                VectorType                                  &dst,
-                const VectorType                            &src,
-                const std::pair<unsigned int, unsigned int> &cells) const;
-
-    void
-    local_internal_force(
-      const dealii::MatrixFree<dim, double>       &data,
-      VectorType                                  &dst,
-      const VectorType                            &src,
-      const std::pair<unsigned int, unsigned int> &cells) const;
 
     void
     compute_diagonal();
