@@ -217,7 +217,8 @@ namespace signorini
       if (node.owned && node.active)
         owned_active(node.scalar_dof) = 1.;
     owned_active.compress(VectorOperation::insert);
-    VectorType active(owned_dofs, relevant_dofs, mpi_communicator);
+    VectorType active;
+    active.reinit(solution); // its map, not a third one (see setup_system)
     active = owned_active;
 
     const DisplacementFields<dim> fields(parameters.material,

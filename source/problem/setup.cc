@@ -61,7 +61,12 @@ namespace signorini
     const auto        &relevant_dofs = discretisation.locally_relevant_dofs();
     elastic_operator->reinit();
     solution.reinit(owned_dofs, relevant_dofs, mpi_communicator);
-    pressure.reinit(owned_dofs, relevant_dofs, mpi_communicator);
+    // The pressure shares the displacement's Epetra map: a map of ghosted
+    // entries holds a global-to-local table and a directory, 20 to 30
+    // bytes per relevant dof, which one made from the index sets again
+    // would hold twice.
+    pressure.clear();
+    pressure.reinit(solution);
     newton.reinit();
     contact_surface.setup(discretisation);
   }
