@@ -33,15 +33,11 @@ namespace signorini
       std::vector<std::vector<unsigned char>> blocks;
     };
 
-    /** Compresses the blocks of @p arrays on @p n_threads threads, each
+    /** Compresses the blocks of @p array on @p n_threads threads, each
      * taking the next block not yet taken. */
     void
-    compress(std::vector<CompressedArray> &arrays, const unsigned int n_threads)
+    compress(CompressedArray &array, const unsigned int n_threads)
     {
-      std::vector<std::pair<unsigned int, unsigned int>> blocks;
-      for (unsigned int a = 0; a < arrays.size(); ++a)
-        for (unsigned int b = 0; b < arrays[a].blocks.size(); ++b)
-          blocks.emplace_back(a, b);
       std::atomic<std::size_t> next(0);
       std::atomic<bool>        failed(false);
       const auto               work = [&]() {
@@ -54,10 +50,9 @@ namespace signorini
         // Compressed into a buffer of the largest size a block can take,
         // then copied: a block keeps only the memory it needs.
         std::vector<unsigned char> buffer(deflateBound(&stream, block_size));
-        for (std::size_t i = next++; i < blocks.size(); i = next++)
+        for (std::size_t b = next++; b < array.blocks.size(); b = next++)
           {
-            CompressedArray  &array = arrays[blocks[i].first];
-            const std::size_t start = blocks[i].second * block_size;
+            const std::size_t start = b * block_size;
             const std::size_t size = std::min(block_size, array.size - start);
             deflateReset(&stream);
             stream.next_in = const_cast<unsigned char *>(array.data + start);
@@ -66,15 +61,14 @@ namespace signorini
             stream.avail_out = buffer.size();
             if (deflate(&stream, Z_FINISH) != Z_STREAM_END)
               failed = true;
-            array.blocks[blocks[i].second].assign(buffer.data(),
-                                                  buffer.data() +
-                                                    stream.total_out);
+            array.blocks[b].assign(buffer.data(),
+                                   buffer.data() + stream.total_out);
           }
         deflateEnd(&stream);
       };
       std::vector<dealii::Threads::Task<void>> tasks;
       for (unsigned int t = 1;
-           t < std::min<std::size_t>(n_threads, blocks.size());
+           t < std::min<std::size_t>(n_threads, array.blocks.size());
            ++t)
         tasks.push_back(dealii::Threads::new_task(std::function<void()>(work)));
       work();
@@ -117,7 +111,8 @@ namespace signorini
 
     /** Writes @p array as VTK reads a compressed binary array: the base64
      * of the header (the number of blocks, the size of a block and of the
-     * last one, the compressed size of each), then that of the blocks. */
+     * last one, the compressed size of each), then that of the blocks, one
+     * stream of base64 across them (no copy of them joined). */
     void
     write_array(std::ostream &out, const CompressedArray &array)
     {
@@ -128,21 +123,36 @@ namespace signorini
         static_cast<std::uint32_t>(block_size),
         static_cast<std::uint32_t>(array.size -
                                    (array.blocks.size() - 1) * block_size)};
-      std::size_t compressed_size = 0;
       for (const auto &block : array.blocks)
-        {
-          header.push_back(static_cast<std::uint32_t>(block.size()));
-          compressed_size += block.size();
-        }
-      std::vector<unsigned char> compressed;
-      compressed.reserve(compressed_size);
-      for (const auto &block : array.blocks)
-        compressed.insert(compressed.end(), block.begin(), block.end());
+        header.push_back(static_cast<std::uint32_t>(block.size()));
       std::string text;
       append_base64(text,
                     reinterpret_cast<const unsigned char *>(header.data()),
                     header.size() * sizeof(std::uint32_t));
-      append_base64(text, compressed.data(), compressed.size());
+      out << text;
+      // Whole groups of three bytes per block; the rest carried into the
+      // next one.
+      unsigned char carried[3];
+      std::size_t   n_carried = 0;
+      for (const auto &block : array.blocks)
+        {
+          std::size_t i = 0;
+          while (n_carried > 0 && n_carried < 3 && i < block.size())
+            carried[n_carried++] = block[i++];
+          text.clear();
+          if (n_carried == 3)
+            {
+              append_base64(text, carried, 3);
+              n_carried = 0;
+            }
+          const std::size_t whole = i + (block.size() - i) / 3 * 3;
+          append_base64(text, block.data() + i, whole - i);
+          out << text;
+          for (i = whole; i < block.size(); ++i)
+            carried[n_carried++] = block[i];
+        }
+      text.clear();
+      append_base64(text, carried, n_carried);
       out << text;
     }
 
@@ -185,17 +195,14 @@ namespace signorini
       }
     else
       {
-        std::vector<CompressedArray> arrays;
-        const auto                   add = [&](const auto &values) {
-          arrays.emplace_back(values.data(), values.size() * sizeof(values[0]));
+        // One array at a time, compressed, written and freed: the file's
+        // compressed data is never held whole.
+        const auto write = [&](const auto &values) {
+          CompressedArray array(values.data(),
+                                values.size() * sizeof(values[0]));
+          compress(array, n_threads);
+          write_array(out, array);
         };
-        add(piece.points);
-        add(piece.connectivity);
-        add(piece.offsets);
-        add(piece.types);
-        for (const auto *field : fields)
-          add(field->values);
-        compress(arrays, n_threads);
 
         const std::string binary = "\" format=\"binary\">\n";
         out << "<Piece NumberOfPoints=\"" << piece.points.size() / 3
@@ -203,18 +210,18 @@ namespace signorini
             << "  <Points>\n"
             << "    <DataArray type=\"Float32\" NumberOfComponents=\"3"
             << binary;
-        write_array(out, arrays[0]);
+        write(piece.points);
         out << "\n    </DataArray>\n"
             << "  </Points>\n\n"
             << "  <Cells>\n"
             << "    <DataArray type=\"Int32\" Name=\"connectivity" << binary;
-        write_array(out, arrays[1]);
+        write(piece.connectivity);
         out << "\n    </DataArray>\n"
             << "    <DataArray type=\"Int32\" Name=\"offsets" << binary;
-        write_array(out, arrays[2]);
+        write(piece.offsets);
         out << "\n    </DataArray>\n"
             << "    <DataArray type=\"UInt8\" Name=\"types" << binary;
-        write_array(out, arrays[3]);
+        write(piece.types);
         out << "\n    </DataArray>\n"
             << "  </Cells>\n"
             << "  <PointData Scalars=\"scalars\">\n";
@@ -224,7 +231,7 @@ namespace signorini
                 << (fields[f]->n_components > 1 ? "\" NumberOfComponents=\"3" :
                                                   "")
                 << binary;
-            write_array(out, arrays[4 + f]);
+            write(fields[f]->values);
             out << "\n    </DataArray>\n";
           }
         out << "  </PointData>\n"
