@@ -114,6 +114,10 @@ namespace signorini
     // The finest is the fine operator's own mesh (a reference: dropped).
     meshes.back().reset();
     const unsigned int top = meshes.size() - 1;
+    // The fine operator's MatrixFree is let go before the levels take
+    // their memory (the coarsest level alone keeps its own).
+    if (top > 0)
+      fine->release_matrix_free();
 
     constraints.resize(0, top);
     operators.resize(0, top);
@@ -139,13 +143,12 @@ namespace signorini
         operators[level] = std::make_shared<LevelOperator>(material);
         operators[level]->reinit(mapping, *dofs.back(), level_constraints);
         // All but the coarsest level (whose matrix is assembled) apply
-        // their cells without deal.II's MatrixFree where they can.
+        // their cells without deal.II's MatrixFree where they can, and let
+        // it go at once.
         if (level > 0)
           operators[level]->release_matrix_free();
       }
     operators[top] = fine;
-    if (top > 0)
-      fine->release_matrix_free();
 
     std::vector<const DoFHandler<dim> *>           level_dofs;
     std::vector<const AffineConstraints<double> *> level_constraints;
@@ -174,14 +177,28 @@ namespace signorini
     // Off-diagonal entry k of a block: components (0,1), (1,2), (0,2).
     constexpr unsigned int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
 
-    VectorType finer_diagonal(diagonal), finer_off(off_diagonal);
+    // The previous step's multigrid, with its level vectors and smoothers'
+    // vectors, goes before this step's level diagonals take their memory.
+    preconditioner.reset();
+    multigrid.reset();
+    smoother.clear();
+    coarse.reset();
+    direct.reset();
+
+    // Restricted from the fine vectors themselves, then level by level.
+    VectorType finer_diagonal, finer_off;
     for (unsigned int level = top; level-- > 0;)
       {
         VectorType level_diagonal, level_off;
         operators[level]->initialize_dof_vector(level_diagonal);
         operators[level]->initialize_dof_vector(level_off);
-        transfer.restrict_and_add(level + 1, level_diagonal, finer_diagonal);
-        transfer.restrict_and_add(level + 1, level_off, finer_off);
+        const bool from_fine = level + 1 == top;
+        transfer.restrict_and_add(level + 1,
+                                  level_diagonal,
+                                  from_fine ? diagonal : finer_diagonal);
+        transfer.restrict_and_add(level + 1,
+                                  level_off,
+                                  from_fine ? off_diagonal : finer_off);
 
         // The owned dofs come as whole vertices, dim at a time.
         std::vector<typename LevelOperator::NodalBlock> blocks;
@@ -212,10 +229,6 @@ namespace signorini
       }
 
     // The coarsest level's factorisation.
-    preconditioner.reset();
-    multigrid.reset();
-    coarse.reset();
-    direct.reset();
     operators[0]->assemble_matrix(coarse_matrix);
     direct = std::make_unique<TrilinosWrappers::SolverDirect>(coarse_control);
     try
@@ -241,7 +254,6 @@ namespace signorini
         data[level].smoothing_range     = smoothing_range;
         data[level].eig_cg_n_iterations = eigenvalue_cg_steps;
       }
-    smoother.clear();
     smoother.initialize(operators, data);
     mg_matrix.initialize(operators);
     multigrid = std::make_unique<Multigrid<VectorType>>(

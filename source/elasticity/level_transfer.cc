@@ -131,6 +131,14 @@ namespace signorini
       consistent = false;
       return identity;
     };
+    // Reserved whole: grown an entry at a time, the tables would hold up to
+    // twice their size.
+    unsigned int n_cells = 0;
+    for (const auto &cell : fine.active_cell_iterators())
+      n_cells += cell->is_locally_owned() ? 1 : 0;
+    pair.fine_dofs.reserve(n_cells * n);
+    pair.embedding.reserve(n_cells);
+    coarse_indices.reserve(n_cells * n);
     for (const auto &cell : fine.active_cell_iterators())
       if (cell->is_locally_owned())
         {
