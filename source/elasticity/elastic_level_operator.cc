@@ -14,7 +14,8 @@ namespace signorini
 
   template <int dim>
   ElasticLevelOperator<dim>::ElasticLevelOperator(const Material &material)
-    : mu(material.mu())
+    : material(material)
+    , mu(material.mu())
     , lambda(material.template lambda<dim>())
   {
   }
@@ -27,19 +28,29 @@ namespace signorini
   {
     constraints = &given;
     dof_handler = &dofs;
-    released    = false;
-    typename MatrixFree<dim, double>::AdditionalData data;
-    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
-    data.mapping_update_flags  = update_gradients | update_JxW_values;
-    matrix_free.reinit(mapping, dofs, given, QGauss<1>(2), data);
-    partitioner = matrix_free.get_vector_partitioner();
-    setup_cell_matrices();
+    std::vector<CellIterator> cells;
+    by_vertices = setup_by_vertices(mapping, cells);
+    released    = by_vertices;
+    if (by_vertices)
+      matrix_free.clear();
+    if (!by_vertices)
+      {
+        typename MatrixFree<dim, double>::AdditionalData data;
+        data.tasks_parallel_scheme =
+          MatrixFree<dim, double>::AdditionalData::none;
+        data.mapping_update_flags = update_gradients | update_JxW_values;
+        matrix_free.reinit(mapping, dofs, given, QGauss<1>(2), data);
+        partitioner = matrix_free.get_vector_partitioner();
+        setup_cell_matrices();
+        for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
+          cells.push_back(matrix_free.get_cell_iterator(cell, 0));
+      }
 
     constrained.clear();
     for (const auto i : dofs.locally_owned_dofs())
       if (given.is_constrained(i))
         constrained.push_back(partitioner->global_to_local(i));
-    compute_diagonal();
+    compute_diagonal(cells);
     initialize_dof_vector(projected);
     set_contact({}, {});
   }
@@ -74,7 +85,8 @@ namespace signorini
     constraints = nullptr;
     dof_handler = nullptr;
     partitioner.reset();
-    released = false;
+    released    = false;
+    by_vertices = false;
     constrained.clear();
     identity.clear();
     held.clear();
@@ -328,48 +340,43 @@ namespace signorini
 
   template <int dim>
   void
-  ElasticLevelOperator<dim>::compute_diagonal()
+  ElasticLevelOperator<dim>::compute_diagonal(
+    const std::vector<CellIterator> &cells)
   {
     // The diagonal of C^T K C, C the constraints: a cell without
     // constrained dofs adds its matrix's diagonal; a cell with some adds
     // v^T K v for each dof g its dofs depend on, v_i the weight of g in
     // local dof i (1 for g itself, a hanging node's weight, 0 for a
     // Dirichlet dof).
-    constexpr unsigned int n  = Evaluation::static_dofs_per_cell;
-    const auto            &fe = matrix_free.get_dof_handler().get_fe();
-    // The FE's local dof k at FEEvaluation's position (component by
-    // component, Q1's nodes lexicographic as its vertices).
-    std::array<unsigned int, n> position;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const auto [component, node] = fe.system_to_component_index(k);
-        position[k]                  = component * (n / dim) + node;
-      }
+    constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
+    const auto             position = evaluation_positions();
     initialize_dof_vector(diagonal_without_contact);
-    cell_dofs.assign(matrix_free.n_cell_batches() * n, 0);
-    direct.assign(matrix_free.n_cell_batches(), false);
+    cell_dofs.assign(cells.size() * n, 0);
+    direct.assign(cells.size(), false);
     line_offsets.assign(1, 0);
     line_entries.clear();
     line_dof.clear();
     std::unordered_map<types::global_dof_index, unsigned int> line_of;
-    Evaluation                                                phi(matrix_free);
+    std::unique_ptr<Evaluation>                               phi;
     std::vector<double>                                       columns(n * n);
     std::vector<types::global_dof_index>                      indices(n);
     std::vector<std::pair<types::global_dof_index,
                           std::vector<std::pair<unsigned int, double>>>>
       depends;
-    for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
+    for (unsigned int cell = 0; cell < cells.size(); ++cell)
       {
         const double *K = nullptr;
         if (matrix_of_cell[cell] != CellMatrices::none)
           K = cell_matrices.matrix(matrix_of_cell[cell]);
         else
           {
-            phi.reinit(cell);
-            quadrature_matrix(phi, columns);
+            if (!phi)
+              phi = std::make_unique<Evaluation>(matrix_free);
+            phi->reinit(cell);
+            quadrature_matrix(*phi, columns);
             K = columns.data();
           }
-        matrix_free.get_cell_iterator(cell, 0)->get_dof_indices(indices);
+        cells[cell]->get_dof_indices(indices);
         bool plain = true;
         for (unsigned int k = 0; k < n; ++k)
           {
@@ -514,7 +521,7 @@ namespace signorini
   ElasticLevelOperator<dim>::assemble_matrix(
     TrilinosWrappers::SparseMatrix &matrix) const
   {
-    AssertThrow(!released, ExcInternalError());
+    AssertThrow(!released || by_vertices, ExcInternalError());
     const auto    &dofs = *dof_handler;
     const MPI_Comm comm = dofs.get_communicator();
     IndexSet       relevant;
@@ -530,11 +537,33 @@ namespace signorini
                                     Utilities::MPI::this_mpi_process(comm));
     sparsity.compress();
     matrix.reinit(sparsity);
-    MatrixFreeTools::compute_matrix(matrix_free,
-                                    *constraints,
-                                    matrix,
-                                    &ElasticLevelOperator::apply_cell,
-                                    this);
+    if (by_vertices)
+      {
+        // The cells' matrices, in the mesh's order as matrix_of_cell.
+        constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
+        const auto             position = evaluation_positions();
+        FullMatrix<double>     cell_matrix(n, n);
+        std::vector<types::global_dof_index> indices(n);
+        unsigned int                         c = 0;
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const double *K = cell_matrices.matrix(matrix_of_cell[c++]);
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  cell_matrix(i, j) = K[position[j] * n + position[i]];
+              cell->get_dof_indices(indices);
+              constraints->distribute_local_to_global(cell_matrix,
+                                                      indices,
+                                                      matrix);
+            }
+      }
+    else
+      MatrixFreeTools::compute_matrix(matrix_free,
+                                      *constraints,
+                                      matrix,
+                                      &ElasticLevelOperator::apply_cell,
+                                      this);
     // The contact of a coarse level: nodal blocks, no held lines.
     for (const auto &[dofs_of, stiffness] : blocks)
       for (unsigned int a = 0; a < dim; ++a)

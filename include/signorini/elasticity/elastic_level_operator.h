@@ -26,10 +26,13 @@ namespace signorini
    * processes): the integral of eps(v) : sigma(u) with the isotropic law of
    * Material (plane strain, plane stress or 3D, volumetric strain at every
    * point). The hanging-node and Dirichlet constraints given to reinit()
-   * are condensed; their rows act as the identity. Where every cell has a
-   * shape matrix (boxes), the levels above the coarsest free the MatrixFree
-   * once set up and loop over their own dof indices (at 1.49M dofs on two
-   * processes, 90 MB less at the peak).
+   * are condensed; their rows act as the identity. Where every cell is a
+   * parallelepiped (boxes), no MatrixFree is made: the cells' shape
+   * matrices come from FEValues and the operator loops over its own dof
+   * indices (MatrixFree::reinit() passes through about 1 kB per cell; at
+   * 1.49M dofs on two processes it set the peak). Elsewhere MatrixFree
+   * evaluates the cells without a matrix, and the levels above the
+   * coarsest free it where every cell has one after all.
    *
    * Around it, what contact adds, both local to a vertex:
    * - held lines: dofs expressed by other dofs of their vertex,
@@ -161,9 +164,26 @@ namespace signorini
     void
     quadrature_matrix(Evaluation &phi, std::vector<double> &columns) const;
 
+    using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
+
     /** The matrices of the cells with an affine mapping, one per shape. */
     void
     setup_cell_matrices();
+
+    /** Without MatrixFree: if every locally owned cell on every process is
+     * a parallelepiped (the mapping is linear) of at most
+     * CellMatrices::max_matrices shapes, their matrices (from FEValues),
+     * @p cells (the locally owned cells in the mesh's order) and the
+     * vectors' layout (the cells' dofs and the masters of their
+     * constrained dofs); else false, and nothing set. Collective. */
+    bool
+    setup_by_vertices(const dealii::Mapping<dim> &mapping,
+                      std::vector<CellIterator>  &cells);
+
+    /** The FE's local dof k at FEEvaluation's position (component by
+     * component, Q1's nodes lexicographic as its vertices). */
+    std::array<unsigned int, Evaluation::static_dofs_per_cell>
+    evaluation_positions() const;
 
     /** dst += K src on @p cells: the `direct` cells by their matrix, the
      * `resolved` ones by their matrix and constraint lines (unless
@@ -183,9 +203,12 @@ namespace signorini
     cell_loop(VectorType &dst, const VectorType &src) const;
 
 
+    /** The diagonal and cell_dofs (with the constraint lines) of
+     * @p cells, in the order of matrix_of_cell. */
     void
-    compute_diagonal();
+    compute_diagonal(const std::vector<CellIterator> &cells);
 
+    const Material                 &material;
     const double                    mu;
     const double                    lambda;
     dealii::MatrixFree<dim, double> matrix_free;
@@ -216,8 +239,12 @@ namespace signorini
     const dealii::DoFHandler<dim>           *dof_handler = nullptr;
     /** The vectors' layout: MatrixFree's, kept when it is released. */
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
-    /** Whether release_matrix_free() freed matrix_free. */
+    /** Whether matrix_free is empty: freed by release_matrix_free(), or
+     * never made (by_vertices). */
     bool released = false;
+    /** Whether setup_by_vertices() set the operator up: its cells are the
+     * locally owned ones in the mesh's order. */
+    bool by_vertices = false;
     /** Locally owned constrained dofs (local indices). */
     std::vector<unsigned int> constrained;
     /** constrained and the held dofs, sorted. */
