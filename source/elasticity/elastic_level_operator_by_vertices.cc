@@ -30,7 +30,7 @@ namespace signorini
 
   template <int dim>
   bool
-  ElasticLevelOperator<dim>::setup_by_vertices(const Mapping<dim>        &mapping,
+  ElasticLevelOperator<dim>::setup_by_vertices(const Mapping<dim> &mapping,
                                                std::vector<CellIterator> &cells)
   {
     constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
@@ -83,8 +83,9 @@ namespace signorini
         const int exponent = std::ilogb(largest) - 40;
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
-            key[a * dim + b] = std::ldexp(
-              std::round(std::ldexp(inverse[a][b], -exponent)), exponent);
+            key[a * dim + b] =
+              std::ldexp(std::round(std::ldexp(inverse[a][b], -exponent)),
+                         exponent);
         unsigned int index = cell_matrices.find(key);
         if (index == CellMatrices::none)
           {
@@ -123,9 +124,7 @@ namespace signorini
                   ghosts.push_back(entry.first);
           }
       }
-    std::sort(ghosts.begin(), ghosts.end());
-    ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
-    IndexSet ghost_set(dofs.n_dofs());
+    IndexSet ghost_set(dofs.n_dofs()); // (sorts and merges them)
     ghost_set.add_indices(ghosts.begin(), ghosts.end());
     partitioner =
       std::make_shared<Utilities::MPI::Partitioner>(owned,
