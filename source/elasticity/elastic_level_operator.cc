@@ -30,10 +30,9 @@ namespace signorini
     dof_handler = &dofs;
     std::vector<CellIterator> cells;
     by_vertices = setup_by_vertices(mapping, cells);
-    released    = by_vertices;
     if (by_vertices)
       matrix_free.clear();
-    if (!by_vertices)
+    else
       {
         typename MatrixFree<dim, double>::AdditionalData data;
         data.tasks_parallel_scheme =
@@ -57,21 +56,6 @@ namespace signorini
 
   template <int dim>
   void
-  ElasticLevelOperator<dim>::release_matrix_free()
-  {
-    const bool all_matrices =
-      std::find(matrix_of_cell.begin(),
-                matrix_of_cell.end(),
-                CellMatrices::none) == matrix_of_cell.end();
-    if (released || Utilities::MPI::logical_or(!all_matrices,
-                                               dof_handler->get_communicator()))
-      return;
-    matrix_free.clear();
-    released = true;
-  }
-
-  template <int dim>
-  void
   ElasticLevelOperator<dim>::clear()
   {
     matrix_free.clear();
@@ -85,7 +69,6 @@ namespace signorini
     constraints = nullptr;
     dof_handler = nullptr;
     partitioner.reset();
-    released    = false;
     by_vertices = false;
     constrained.clear();
     identity.clear();
@@ -188,8 +171,8 @@ namespace signorini
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
   {
-    // Only the cells without a shape matrix need FEEvaluation (none once
-    // release_matrix_free() freed the MatrixFree).
+    // Only the cells without a shape matrix need FEEvaluation (none when
+    // the operator was set up by_vertices, without a MatrixFree).
     std::unique_ptr<Evaluation> phi;
     constexpr unsigned int      n = Evaluation::static_dofs_per_cell;
     double                      x[n], y[n];
@@ -262,8 +245,8 @@ namespace signorini
   ElasticLevelOperator<dim>::cell_loop(VectorType       &dst,
                                        const VectorType &src) const
   {
-    // As MatrixFree::cell_loop() does it, which the levels that freed the
-    // MatrixFree cannot call.
+    // As MatrixFree::cell_loop() does it, which an operator set up
+    // by_vertices, without a MatrixFree, cannot call.
     const bool had_ghosts = src.has_ghost_elements();
     if (!had_ghosts)
       src.update_ghost_values();
@@ -521,7 +504,6 @@ namespace signorini
   ElasticLevelOperator<dim>::assemble_matrix(
     TrilinosWrappers::SparseMatrix &matrix) const
   {
-    AssertThrow(!released || by_vertices, ExcInternalError());
     const auto    &dofs = *dof_handler;
     const MPI_Comm comm = dofs.get_communicator();
     IndexSet       relevant;

@@ -114,10 +114,6 @@ namespace signorini
     // The finest is the fine operator's own mesh (a reference: dropped).
     meshes.back().reset();
     const unsigned int top = meshes.size() - 1;
-    // The fine operator's MatrixFree is let go before the levels take
-    // their memory (the coarsest level alone keeps its own).
-    if (top > 0)
-      fine->release_matrix_free();
 
     constraints.resize(0, top);
     operators.resize(0, top);
@@ -142,11 +138,6 @@ namespace signorini
         level_constraints.close();
         operators[level] = std::make_shared<LevelOperator>(material);
         operators[level]->reinit(mapping, *dofs.back(), level_constraints);
-        // All but the coarsest level (whose matrix is assembled) apply
-        // their cells without deal.II's MatrixFree where they can, and let
-        // it go at once.
-        if (level > 0)
-          operators[level]->release_matrix_free();
       }
     operators[top] = fine;
 

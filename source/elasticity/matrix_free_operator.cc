@@ -85,10 +85,10 @@ namespace signorini
       return;
     TimerOutput::Scope t(timer, "Setup: matrix-free operator");
     fine = std::make_shared<ElasticLevelOperator<dim>>(material);
-    // MatrixFree::reinit() passes through about 1 kB per cell more than it
-    // keeps: the pages freed since the last trim go back first, so that
-    // its transient does not stand on top of them (9 MB less peak at
-    // 1.49M dofs on two processes).
+    // Where the operator needs a MatrixFree (curved cells), its reinit()
+    // passes through about 1 kB per cell more than it keeps: the pages
+    // freed since the last trim go back first, so that its transient does
+    // not stand on top of them.
     release_free_memory();
     fine->reinit(discretisation.mapping(),
                  discretisation.dof_handler(),

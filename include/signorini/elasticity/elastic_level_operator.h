@@ -31,8 +31,7 @@ namespace signorini
    * matrices come from FEValues and the operator loops over its own dof
    * indices (MatrixFree::reinit() passes through about 1 kB per cell; at
    * 1.49M dofs on two processes it set the peak). Elsewhere MatrixFree
-   * evaluates the cells without a matrix, and the levels above the
-   * coarsest free it where every cell has one after all.
+   * evaluates the cells without a matrix.
    *
    * Around it, what contact adds, both local to a vertex:
    * - held lines: dofs expressed by other dofs of their vertex,
@@ -82,14 +81,6 @@ namespace signorini
     /** Frees everything. */
     void
     clear();
-
-    /** Frees deal.II's MatrixFree (its copy of the dof indices and the
-     * mapping data) when every locally owned cell on every process has a
-     * shape matrix: vmult() and internal_force() then loop over cell_dofs
-     * themselves. A level whose matrix is assembled (the coarsest) keeps
-     * it. */
-    void
-    release_matrix_free();
 
     /** Sets what contact adds (see the class); recomputes the diagonal. */
     void
@@ -237,13 +228,10 @@ namespace signorini
     std::vector<unsigned int>                line_dof;
     const dealii::AffineConstraints<double> *constraints = nullptr;
     const dealii::DoFHandler<dim>           *dof_handler = nullptr;
-    /** The vectors' layout: MatrixFree's, kept when it is released. */
+    /** The vectors' layout: MatrixFree's, or setup_by_vertices()'s. */
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
-    /** Whether matrix_free is empty: freed by release_matrix_free(), or
-     * never made (by_vertices). */
-    bool released = false;
-    /** Whether setup_by_vertices() set the operator up: its cells are the
-     * locally owned ones in the mesh's order. */
+    /** Whether setup_by_vertices() set the operator up (matrix_free is then
+     * empty): its cells are the locally owned ones in the mesh's order. */
     bool by_vertices = false;
     /** Locally owned constrained dofs (local indices). */
     std::vector<unsigned int> constrained;
