@@ -54,12 +54,12 @@ namespace
   decode(const std::string &text)
   {
     // The header's base64 stands alone: 3 + n_blocks numbers of 4 bytes.
-    const auto first = from_base64(text.substr(0, 8));
+    const auto    first = from_base64(text.substr(0, 8));
     std::uint32_t n_blocks;
     std::memcpy(&n_blocks, first.data(), 4);
     const std::size_t header_bytes = 4 * (3 + n_blocks);
     const std::size_t header_chars = 4 * ((header_bytes + 2) / 3);
-    const auto        header = from_base64(text.substr(0, header_chars));
+    const auto        header       = from_base64(text.substr(0, header_chars));
     std::vector<std::uint32_t> numbers(3 + n_blocks);
     std::memcpy(numbers.data(), header.data(), header_bytes);
     const auto compressed = from_base64(text.substr(header_chars));
@@ -69,7 +69,9 @@ namespace
       {
         uLongf size = (b + 1 == n_blocks) ? numbers[2] : numbers[1];
         std::vector<unsigned char> block(size);
-        if (uncompress(block.data(), &size, compressed.data() + at,
+        if (uncompress(block.data(),
+                       &size,
+                       compressed.data() + at,
                        numbers[3 + b]) != Z_OK)
           return {};
         at += numbers[3 + b];
@@ -87,10 +89,10 @@ namespace
     std::vector<std::string> found;
     const std::string        open = "format=\"binary\">\n", close = "\n";
     for (std::size_t at = file.find(open); at != std::string::npos;
-         at = file.find(open, at))
+         at             = file.find(open, at))
       {
-        at += open.size();
-        found.push_back(file.substr(at, file.find(close, at) - at));
+                    at += open.size();
+                    found.push_back(file.substr(at, file.find(close, at) - at));
       }
     return found;
   }
@@ -130,12 +132,12 @@ main()
           std::ostringstream out;
           write_vtu(out, piece, threads);
           const auto texts = arrays(out.str());
-          const bool all =
-            texts.size() == 5 && same(decode(texts[0]), piece.points) &&
-            same(decode(texts[1]), piece.connectivity) &&
-            same(decode(texts[2]), piece.offsets) &&
-            same(decode(texts[3]), piece.types) &&
-            same(decode(texts[4]), field.values);
+          const bool all   = texts.size() == 5 &&
+                           same(decode(texts[0]), piece.points) &&
+                           same(decode(texts[1]), piece.connectivity) &&
+                           same(decode(texts[2]), piece.offsets) &&
+                           same(decode(texts[3]), piece.types) &&
+                           same(decode(texts[4]), field.values);
           std::cout << n_points << " points, " << threads << " thread(s), "
                     << (3 * n_points * 4 + 262143) / 262144
                     << " block(s) of points: "
