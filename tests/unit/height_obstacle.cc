@@ -13,6 +13,7 @@
 #include <signorini/contact/height_obstacle.h>
 #include <signorini/contact/obstacle_set.h>
 
+#include "vtu_arrays.h"
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -26,7 +27,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include <zlib.h>
 
 using namespace dealii;
 using namespace signorini;
@@ -75,33 +75,6 @@ namespace
            0.);
   }
 
-  /** Decodes base64 (padding '=' ends a block; whitespace skipped). */
-  std::vector<unsigned char>
-  base64_decode(const std::string &text)
-  {
-    static const std::string alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::vector<unsigned char> bytes;
-    unsigned int               buffer = 0, bits = 0;
-    for (const char c : text)
-      {
-        const auto k = alphabet.find(c);
-        if (k == std::string::npos)
-          {
-            bits = buffer = 0; // '=' or whitespace: a block ends
-            continue;
-          }
-        buffer = (buffer << 6) | k;
-        bits += 6;
-        if (bits >= 8)
-          {
-            bits -= 8;
-            bytes.push_back((buffer >> bits) & 0xff);
-          }
-      }
-    return bytes;
-  }
-
   /** The value of attribute @p name in the XML element that starts at
    * @p from. */
   std::string
@@ -115,11 +88,7 @@ namespace
     return xml.substr(begin, xml.find('"', begin) - begin);
   }
 
-  /**
-   * The points of the VTU text @p xml: a zlib-compressed DataArray is the
-   * base64 of a header of UInt32 (number of blocks, block size, last block
-   * size, compressed sizes) followed by the base64 of the compressed blocks.
-   */
+  /** The points of the VTU text @p xml (vtu_arrays::decode()). */
   std::vector<std::array<double, 3>>
   vtu_points(const std::string &xml)
   {
@@ -133,35 +102,7 @@ namespace
         attribute(xml, array, "format") != "binary")
       throw std::runtime_error("not a zlib-compressed binary VTU");
 
-    // The header alone: 3 + n_blocks UInt32, base64 in its own block.
-    std::string trimmed;
-    for (const char c : data)
-      if (!std::isspace(static_cast<unsigned char>(c)))
-        trimmed += c;
-    const auto    first = base64_decode(trimmed.substr(0, 8));
-    std::uint32_t n_blocks;
-    std::memcpy(&n_blocks, first.data(), 4);
-    const unsigned int header_bytes = 4 * (3 + n_blocks);
-    const unsigned int header_chars = 4 * ((header_bytes + 2) / 3);
-    const auto         header = base64_decode(trimmed.substr(0, header_chars));
-    std::vector<std::uint32_t> h(3 + n_blocks);
-    std::memcpy(h.data(), header.data(), header_bytes);
-    const auto compressed = base64_decode(trimmed.substr(header_chars));
-
-    std::vector<unsigned char> raw;
-    std::size_t                offset = 0;
-    for (unsigned int b = 0; b < n_blocks; ++b)
-      {
-        uLongf size = (b + 1 < n_blocks || h[2] == 0) ? h[1] : h[2];
-        std::vector<unsigned char> block(size);
-        if (uncompress(block.data(),
-                       &size,
-                       compressed.data() + offset,
-                       h[3 + b]) != Z_OK)
-          throw std::runtime_error("zlib failed");
-        raw.insert(raw.end(), block.begin(), block.begin() + size);
-        offset += h[3 + b];
-      }
+    const auto raw = vtu_arrays::decode(data).bytes;
 
     std::vector<std::array<double, 3>> result;
     const unsigned int                 width = type == "Float64" ? 8 : 4;

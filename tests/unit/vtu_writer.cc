@@ -9,14 +9,13 @@
 #include <signorini/output/file_output.h>
 
 #include "checks.h"
+#include "vtu_arrays.h"
 #include <cmath>
-#include <cstdint>
 #include <cstring>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
-#include <zlib.h>
 
 using namespace signorini;
 
@@ -26,60 +25,26 @@ namespace
    * to modulo 3 (1 and 2: the base64 carried a byte or two across). */
   bool carried[3] = {false, false, false};
 
-  std::vector<unsigned char>
-  from_base64(const std::string &text)
-  {
-    static const std::string digits =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::vector<unsigned char> bytes;
-    unsigned int               bits = 0, n_bits = 0;
-    for (const char c : text)
-      {
-        if (c == '=')
-          break;
-        bits = (bits << 6) | static_cast<unsigned int>(digits.find(c));
-        n_bits += 6;
-        if (n_bits >= 8)
-          {
-            n_bits -= 8;
-            bytes.push_back(static_cast<unsigned char>(bits >> n_bits));
-            bits &= (1u << n_bits) - 1;
-          }
-      }
-    return bytes;
-  }
-
-  /** The bytes of the DataArray whose text is @p text. */
+  /** The bytes of the DataArray whose text is @p text; none if it does
+   * not decode. */
   std::vector<unsigned char>
   decode(const std::string &text)
   {
-    // The header's base64 stands alone: 3 + n_blocks numbers of 4 bytes.
-    const auto    first = from_base64(text.substr(0, 8));
-    std::uint32_t n_blocks;
-    std::memcpy(&n_blocks, first.data(), 4);
-    const std::size_t header_bytes = 4 * (3 + n_blocks);
-    const std::size_t header_chars = 4 * ((header_bytes + 2) / 3);
-    const auto        header       = from_base64(text.substr(0, header_chars));
-    std::vector<std::uint32_t> numbers(3 + n_blocks);
-    std::memcpy(numbers.data(), header.data(), header_bytes);
-    const auto compressed = from_base64(text.substr(header_chars));
-    std::vector<unsigned char> bytes;
-    std::size_t                at = 0;
-    for (std::uint32_t b = 0; b < n_blocks; ++b)
+    try
       {
-        uLongf size = (b + 1 == n_blocks) ? numbers[2] : numbers[1];
-        std::vector<unsigned char> block(size);
-        if (uncompress(block.data(),
-                       &size,
-                       compressed.data() + at,
-                       numbers[3 + b]) != Z_OK)
-          return {};
-        at += numbers[3 + b];
-        if (b + 1 < n_blocks)
-          carried[at % 3] = true;
-        bytes.insert(bytes.end(), block.begin(), block.begin() + size);
+        const auto  array = vtu_arrays::decode(text);
+        std::size_t at    = 0;
+        for (std::size_t b = 0; b + 1 < array.compressed_sizes.size(); ++b)
+          {
+            at += array.compressed_sizes[b];
+            carried[at % 3] = true;
+          }
+        return array.bytes;
       }
-    return at == compressed.size() ? bytes : std::vector<unsigned char>();
+    catch (const std::exception &)
+      {
+        return {};
+      }
   }
 
   /** The texts of the binary DataArrays of @p file, in order. */
@@ -87,12 +52,13 @@ namespace
   arrays(const std::string &file)
   {
     std::vector<std::string> found;
-    const std::string        open = "format=\"binary\">\n", close = "\n";
-    for (std::size_t at = file.find(open); at != std::string::npos;
-         at             = file.find(open, at))
+    const std::string        open = "format=\"binary\">\n";
+    std::size_t              at   = file.find(open);
+    while (at != std::string::npos)
       {
-                    at += open.size();
-                    found.push_back(file.substr(at, file.find(close, at) - at));
+        at += open.size();
+        found.push_back(file.substr(at, file.find('\n', at) - at));
+        at = file.find(open, at);
       }
     return found;
   }
