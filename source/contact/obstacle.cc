@@ -62,7 +62,8 @@ namespace signorini
                                        std::to_string(cell.size()) + " points");
             }
         }
-    write_vtu(out, piece, 1);
+    // Small and written once: zlib, which every VTK reader reads.
+    write_vtu(out, piece, VtuCompression::zlib, 1);
   }
 
   template <int dim>

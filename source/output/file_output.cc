@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <lz4.h>
+#include <sstream>
 #include <stdexcept>
 #include <tuple>
 #include <zlib.h>
@@ -33,38 +35,97 @@ namespace signorini
       std::vector<std::vector<unsigned char>> blocks;
     };
 
-    /** Compresses the blocks of @p array on @p n_threads threads, each
-     * taking the next block not yet taken. */
-    void
-    compress(CompressedArray &array, const unsigned int n_threads)
+    /** One thread's compressor of blocks: zlib's deflate at its fastest
+     * level, or LZ4 (raw blocks, as VTK's vtkLZ4DataCompressor reads them). */
+    class BlockCompressor
     {
-      std::atomic<std::size_t> next(0);
-      std::atomic<bool>        failed(false);
-      const auto               work = [&]() {
-        z_stream stream = {};
-        if (deflateInit(&stream, Z_BEST_SPEED) != Z_OK)
+    public:
+      explicit BlockCompressor(const VtuCompression compression)
+        : compression(compression)
+      {
+        if (compression == VtuCompression::zlib)
           {
-            failed = true;
-            return;
+            ready = deflateInit(&stream, Z_BEST_SPEED) == Z_OK;
+            if (ready)
+              buffer.resize(deflateBound(&stream, block_size));
           }
+        else
+          buffer.resize(LZ4_compressBound(block_size));
+      }
+
+      ~BlockCompressor()
+      {
+        if (compression == VtuCompression::zlib && ready)
+          deflateEnd(&stream);
+      }
+
+      BlockCompressor(const BlockCompressor &) = delete;
+      BlockCompressor &
+      operator=(const BlockCompressor &) = delete;
+
+      /** Compresses @p size bytes at @p data into @p block; false if the
+       * library failed. */
+      bool
+      compress(const unsigned char        *data,
+               const std::size_t           size,
+               std::vector<unsigned char> &block)
+      {
         // Compressed into a buffer of the largest size a block can take,
         // then copied: a block keeps only the memory it needs.
-        std::vector<unsigned char> buffer(deflateBound(&stream, block_size));
-        for (std::size_t b = next++; b < array.blocks.size(); b = next++)
+        std::size_t compressed = 0;
+        if (compression == VtuCompression::zlib)
           {
-            const std::size_t start = b * block_size;
-            const std::size_t size = std::min(block_size, array.size - start);
+            if (!ready)
+              return false;
             deflateReset(&stream);
-            stream.next_in = const_cast<unsigned char *>(array.data + start);
+            stream.next_in   = const_cast<unsigned char *>(data);
             stream.avail_in  = size;
             stream.next_out  = buffer.data();
             stream.avail_out = buffer.size();
             if (deflate(&stream, Z_FINISH) != Z_STREAM_END)
-              failed = true;
-            array.blocks[b].assign(buffer.data(),
-                                   buffer.data() + stream.total_out);
+              return false;
+            compressed = stream.total_out;
           }
-        deflateEnd(&stream);
+        else
+          {
+            const int n =
+              LZ4_compress_default(reinterpret_cast<const char *>(data),
+                                   reinterpret_cast<char *>(buffer.data()),
+                                   static_cast<int>(size),
+                                   static_cast<int>(buffer.size()));
+            if (n <= 0)
+              return false;
+            compressed = n;
+          }
+        block.assign(buffer.data(), buffer.data() + compressed);
+        return true;
+      }
+
+    private:
+      VtuCompression             compression;
+      z_stream                   stream = {};
+      bool                       ready  = true;
+      std::vector<unsigned char> buffer;
+    };
+
+    /** Compresses the blocks of @p array on @p n_threads threads, each
+     * taking the next block not yet taken. */
+    void
+    compress(CompressedArray     &array,
+             const VtuCompression compression,
+             const unsigned int   n_threads)
+    {
+      std::atomic<std::size_t> next(0);
+      std::atomic<bool>        failed(false);
+      const auto               work = [&]() {
+        BlockCompressor compressor(compression);
+        for (std::size_t b = next++; b < array.blocks.size(); b = next++)
+          {
+            const std::size_t start = b * block_size;
+            const std::size_t size = std::min(block_size, array.size - start);
+            if (!compressor.compress(array.data + start, size, array.blocks[b]))
+              failed = true;
+          }
       };
       std::vector<dealii::Threads::Task<void>> tasks;
       for (unsigned int t = 1;
@@ -75,7 +136,9 @@ namespace signorini
       for (auto &task : tasks)
         task.join();
       if (failed)
-        throw std::runtime_error("zlib could not compress the VTU data");
+        throw std::runtime_error(
+          std::string(compression == VtuCompression::zlib ? "zlib" : "LZ4") +
+          " could not compress the VTU data");
     }
 
     /** Appends the base64 encoding of @p size bytes at @p data to @p out. */
@@ -171,11 +234,26 @@ namespace signorini
   } // namespace
 
   void
-  write_vtu(std::ostream &out, const VtuPiece &piece, unsigned int n_threads)
+  write_vtu(std::ostream        &out,
+            const VtuPiece      &piece,
+            const VtuCompression compression,
+            const unsigned int   n_threads)
   {
+    // deal.II's header, which names zlib's compressor.
     dealii::DataOutBase::VtkFlags flags;
     flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
-    dealii::DataOutBase::write_vtu_header(out, flags);
+    std::ostringstream header;
+    dealii::DataOutBase::write_vtu_header(header, flags);
+    std::string text = header.str();
+    if (compression == VtuCompression::lz4)
+      {
+        const std::string zlib = "vtkZLibDataCompressor";
+        const auto        at   = text.find(zlib);
+        if (at == std::string::npos)
+          throw std::logic_error("deal.II's VTU header names no compressor");
+        text.replace(at, zlib.size(), "vtkLZ4DataCompressor");
+      }
+    out << text;
     const auto fields = ordered_fields(piece);
     if (piece.types.empty())
       {
@@ -200,7 +278,7 @@ namespace signorini
         const auto write = [&](const auto &values) {
           CompressedArray array(values.data(),
                                 values.size() * sizeof(values[0]));
-          compress(array, n_threads);
+          compress(array, compression, n_threads);
           write_array(out, array);
         };
 

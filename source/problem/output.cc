@@ -266,9 +266,10 @@ namespace signorini
           cycle + 1 < parameters.refinement.n_cycles ?
             1 :
             MultithreadInfo::n_threads();
-        background_writer.add([piece, directory, name, threads]() {
+        const auto compression = parameters.output.compression;
+        background_writer.add([piece, directory, name, compression, threads]() {
           write_atomically(directory + "/" + name, [&](std::ostream &out) {
-            write_vtu(out, *piece, threads);
+            write_vtu(out, *piece, compression, threads);
           });
         });
         background_writer.add(write_records);
@@ -281,6 +282,7 @@ namespace signorini
                            [&](std::ostream &out) {
                              write_vtu(out,
                                        *piece,
+                                       parameters.output.compression,
                                        MultithreadInfo::n_threads());
                            });
         });

@@ -102,7 +102,8 @@ namespace
         attribute(xml, array, "format") != "binary")
       throw std::runtime_error("not a zlib-compressed binary VTU");
 
-    const auto raw = vtu_arrays::decode(data).bytes;
+    const auto raw =
+      vtu_arrays::decode(data, vtu_arrays::Compressor::zlib).bytes;
 
     std::vector<std::array<double, 3>> result;
     const unsigned int                 width = type == "Float64" ? 8 : 4;

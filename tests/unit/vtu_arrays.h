@@ -1,11 +1,12 @@
 // Decoding the arrays of a VTU file as signorini and deal.II write them
-// (binary, zlib-compressed), for the unit tests that read them back.
+// (binary, zlib- or LZ4-compressed), for the unit tests that read them back.
 #ifndef signorini_tests_unit_vtu_arrays_h
 #define signorini_tests_unit_vtu_arrays_h
 
 #include <cctype>
 #include <cstdint>
 #include <cstring>
+#include <lz4.h>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,14 +48,34 @@ namespace vtu_arrays
     std::vector<std::uint32_t> compressed_sizes;
   };
 
+  /** The compressors a VTU file names in its VTKFile element. */
+  enum class Compressor
+  {
+    zlib,
+    lz4
+  };
+
+  /** The compressor that the VTU text @p file names; throws if none. */
+  inline Compressor
+  compressor(const std::string &file)
+  {
+    const auto end = file.find("<UnstructuredGrid>");
+    if (file.find("compressor=\"vtkZLibDataCompressor\"") < end)
+      return Compressor::zlib;
+    if (file.find("compressor=\"vtkLZ4DataCompressor\"") < end)
+      return Compressor::lz4;
+    throw std::runtime_error("no compressor named");
+  }
+
   /**
-   * The text @p data of a zlib-compressed binary DataArray decoded: the
-   * base64 of a header of UInt32 (number of blocks, block size, last block
-   * size, compressed sizes), then the base64 of the compressed blocks.
-   * Throws if zlib fails or the blocks do not fill the data exactly.
+   * The text @p data of a compressed binary DataArray decoded: the base64
+   * of a header of UInt32 (number of blocks, block size, last block size,
+   * compressed sizes), then the base64 of the blocks compressed by
+   * @p compressor. Throws if the decompression fails or the blocks do not
+   * fill the data exactly.
    */
   inline Array
-  decode(const std::string &data)
+  decode(const std::string &data, const Compressor compressor)
   {
     // The header alone: 3 + n_blocks UInt32, base64 in its own block.
     std::string trimmed;
@@ -77,12 +98,22 @@ namespace vtu_arrays
       {
         uLongf size = (b + 1 < n_blocks || h[2] == 0) ? h[1] : h[2];
         std::vector<unsigned char> block(size);
-        if (offset + h[3 + b] > compressed.size() ||
-            uncompress(block.data(),
-                       &size,
-                       compressed.data() + offset,
-                       h[3 + b]) != Z_OK)
-          throw std::runtime_error("zlib failed");
+        if (offset + h[3 + b] > compressed.size())
+          throw std::runtime_error("blocks beyond the data");
+        if (compressor == Compressor::zlib)
+          {
+            if (uncompress(block.data(),
+                           &size,
+                           compressed.data() + offset,
+                           h[3 + b]) != Z_OK)
+              throw std::runtime_error("zlib failed");
+          }
+        else if (LZ4_decompress_safe(reinterpret_cast<const char *>(
+                                       compressed.data() + offset),
+                                     reinterpret_cast<char *>(block.data()),
+                                     h[3 + b],
+                                     size) != static_cast<int>(size))
+          throw std::runtime_error("LZ4 failed");
         array.bytes.insert(array.bytes.end(),
                            block.begin(),
                            block.begin() + size);

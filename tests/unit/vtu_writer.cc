@@ -1,10 +1,11 @@
 // write_vtu() decoded again: each DataArray is the base64 of its header
 // (number of blocks, block size, last block's size, compressed sizes), then
-// the base64 of its zlib blocks streamed one after the other. Arrays of one
-// and of several 256 kB blocks, on one thread and on two, must give back
-// their bytes exactly; among them, block boundaries where the base64 carries
-// one byte and two bytes into the next block must occur. An empty piece
-// must stay a valid file.
+// the base64 of its zlib or LZ4 blocks streamed one after the other. Arrays
+// of one and of several 256 kB blocks, with either compressor (which the
+// file must name), on one thread and on two, must give back their bytes
+// exactly; among them, block boundaries where the base64 carries one byte
+// and two bytes into the next block must occur. An empty piece must stay a
+// valid file.
 
 #include <signorini/output/file_output.h>
 
@@ -28,11 +29,11 @@ namespace
   /** The bytes of the DataArray whose text is @p text; none if it does
    * not decode. */
   std::vector<unsigned char>
-  decode(const std::string &text)
+  decoded(const std::string &text, const vtu_arrays::Compressor compressor)
   {
     try
       {
-        const auto  array = vtu_arrays::decode(text);
+        const auto  array = vtu_arrays::decode(text, compressor);
         std::size_t at    = 0;
         for (std::size_t b = 0; b + 1 < array.compressed_sizes.size(); ++b)
           {
@@ -93,22 +94,36 @@ main()
       for (unsigned int i = 0; i < 3 * n_points; ++i)
         field.values.push_back(static_cast<float>((i * 7919u) % 1000) / 7.f);
       piece.fields.push_back(field);
-      for (const unsigned int threads : {1u, 2u})
-        {
-          std::ostringstream out;
-          write_vtu(out, piece, threads);
-          const auto texts = arrays(out.str());
-          const bool all   = texts.size() == 5 &&
-                           same(decode(texts[0]), piece.points) &&
-                           same(decode(texts[1]), piece.connectivity) &&
-                           same(decode(texts[2]), piece.offsets) &&
-                           same(decode(texts[3]), piece.types) &&
-                           same(decode(texts[4]), field.values);
-          std::cout << n_points << " points, " << threads << " thread(s), "
-                    << (3 * n_points * 4 + 262143) / 262144
-                    << " block(s) of points: "
-                    << (all ? "decoded exactly" : "FAILED") << std::endl;
-        }
+      for (const auto compression : {VtuCompression::zlib, VtuCompression::lz4})
+        for (const unsigned int threads : {1u, 2u})
+          {
+            std::ostringstream out;
+            write_vtu(out, piece, compression, threads);
+            const auto named = compression == VtuCompression::zlib ?
+                                 vtu_arrays::Compressor::zlib :
+                                 vtu_arrays::Compressor::lz4;
+            bool       all   = false;
+            try
+              {
+                all = vtu_arrays::compressor(out.str()) == named;
+              }
+            catch (const std::exception &)
+              {
+              }
+            const auto texts = arrays(out.str());
+            all              = all && texts.size() == 5 &&
+                  same(decoded(texts[0], named), piece.points) &&
+                  same(decoded(texts[1], named), piece.connectivity) &&
+                  same(decoded(texts[2], named), piece.offsets) &&
+                  same(decoded(texts[3], named), piece.types) &&
+                  same(decoded(texts[4], named), field.values);
+            std::cout << n_points << " points, "
+                      << (compression == VtuCompression::zlib ? "zlib" : "lz4")
+                      << ", " << threads << " thread(s), "
+                      << (3 * n_points * 4 + 262143) / 262144
+                      << " block(s) of points: "
+                      << (all ? "decoded exactly" : "FAILED") << std::endl;
+          }
     }
 
   std::cout << "block boundaries after 1 and 2 bytes of a base64 group: "
@@ -118,7 +133,7 @@ main()
   VtuPiece empty;
   empty.fields.push_back({"displacement", 3, {}});
   std::ostringstream out;
-  write_vtu(out, empty, 1);
+  write_vtu(out, empty, VtuCompression::lz4, 1);
   std::cout << "empty piece: "
             << (out.str().find("NumberOfPoints=\"0\"") != std::string::npos &&
                     out.str().find("</VTKFile>") != std::string::npos ?

@@ -39,13 +39,26 @@ namespace signorini
     std::vector<Field>        fields;
   };
 
+  /** How the arrays of a VTU file are compressed; VTK (ParaView) reads
+   * both. */
+  enum class VtuCompression
+  {
+    /** LZ4: about 15 times faster than zlib, files about 40 % larger. */
+    lz4,
+    /** zlib at its fastest level: the smallest files. */
+    zlib
+  };
+
   /**
-   * Writes @p piece as a VTU file, its arrays compressed with zlib at its
-   * fastest level in blocks (as VTK itself writes them), each compressed on
-   * its own: here on @p n_threads threads.
+   * Writes @p piece as a VTU file, its arrays compressed by @p compression
+   * in blocks (as VTK itself writes them), each compressed on its own: here
+   * on @p n_threads threads.
    */
   void
-  write_vtu(std::ostream &out, const VtuPiece &piece, unsigned int n_threads);
+  write_vtu(std::ostream   &out,
+            const VtuPiece &piece,
+            VtuCompression  compression,
+            unsigned int    n_threads);
 
   /**
    * Writes the PVTU record that joins the VTU files @p pieces, each with the

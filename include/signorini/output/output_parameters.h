@@ -4,6 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <signorini/output/file_output.h>
+
 #include <string>
 #include <vector>
 
@@ -25,6 +27,8 @@ namespace signorini
     bool contact_pressure_table = false;
     /** Write timings.csv, with a linear solve per cycle to compare with. */
     bool timing_table = false;
+    /** How the solution files' arrays are compressed. */
+    VtuCompression compression = VtuCompression::lz4;
 
     /** Declares the entries, with the defaults of a default-constructed
      * instance. */
