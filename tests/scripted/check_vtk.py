@@ -5,6 +5,10 @@ its number of components, and no NaN.
 
 Run with Debian's python3 (package python3-paraview):
     /usr/bin/python3 check_vtk.py FOLDER...
+    /usr/bin/python3 check_vtk.py --same FOLDER OTHER
+The second form checks that the solution VTU files of the two folders hold
+the same points and arrays, value for value (the same run written with
+another compression).
 """
 import math
 import pathlib
@@ -77,6 +81,32 @@ def check(path):
         steps, points, cells, shown or "none"))
     return not problems
 
+
+def same(folder, other):
+    """Whether each solution-*.vtu of folder has the points and arrays of
+    the file of that name in other."""
+    names = sorted(p.name for p in pathlib.Path(folder).glob("solution-*.vtu"))
+    for name in names:
+        a, b = (servermanager.Fetch(open_file(pathlib.Path(f) / name)[0])
+                for f in (folder, other))
+        pairs = [(a.GetPoints().GetData(), b.GetPoints().GetData())]
+        pa, pb = a.GetPointData(), b.GetPointData()
+        for i in range(pa.GetNumberOfArrays()):
+            pairs.append((pa.GetArray(i),
+                          pb.GetArray(pa.GetArrayName(i))))
+        for x, y in pairs:
+            if (y is None or x.GetNumberOfValues() != y.GetNumberOfValues()
+                    or any(x.GetValue(k) != y.GetValue(k)
+                           for k in range(x.GetNumberOfValues()))):
+                print("%s/%s and %s/%s differ" % (folder, name, other, name))
+                return False
+    print("%s and %s: %d solution files, the same points and arrays" % (
+        folder, other, len(names)))
+    return len(names) > 0
+
+
+if sys.argv[1] == "--same":
+    sys.exit(0 if same(sys.argv[2], sys.argv[3]) else 1)
 
 ok = True
 for folder in sys.argv[1:]:
