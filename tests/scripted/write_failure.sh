@@ -9,7 +9,11 @@ source "$TESTS/consistency.bash"
 # MPI's own shared-memory files would exceed the limit: Open MPI keeps its
 # process data in a hash and talks over TCP here.
 export PMIX_MCA_gds=hash OMPI_MCA_btl=self,tcp
-cycles=("subsection Mesh refinement" "  set Number of cycles = 5" "end")
+# The solution files zlib-compressed: LZ4's are larger than the checkpoint
+# of their cycle, and no limit would fall between the two (the sizes below
+# are zlib's).
+cycles=("subsection Mesh refinement" "  set Number of cycles = 5" "end"
+  "subsection Output" "  set Compression = zlib" "end")
 scene reference.prm reference "${cycles[@]}"
 "$SIGNORINI" reference.prm > reference.log 2>&1
 echo "uninterrupted run: exit status $?"
