@@ -207,6 +207,31 @@ def run_step42(folder):
 OPERATORS = (("assembled", AMG_CG), ("matrix-free", MATRIX_FREE))
 
 
+class Pairs:
+    """Two one-process runs of a case at once, one per core
+    (common.run_pair), once per turn of whole_runs_in_turn() (pass the
+    object as its `between`): the machine's own bound on a speed-up from 1
+    to 2 processes is 2 * (one run alone) / (each of two at once)."""
+
+    def __init__(self, name, scene, overrides):
+        self.case = (name, scene, with_overrides(
+            overrides, {"Output": {"Print timings": "true"}}))
+        self.walls = []
+
+    def __call__(self):
+        runs = common.run_pair(WORK, *self.case)
+        if runs:
+            self.walls.append(statistics.mean(r.wall for r in runs))
+
+    def bound(self, alone):
+        """(median wall of each of two at once [s], the bound) for one
+        process's median wall `alone`; NaNs on fewer than two cores."""
+        if not self.walls:
+            return float("nan"), float("nan")
+        together = statistics.median(self.walls)
+        return together, 2. * alone / together
+
+
 def with_overrides(base, extra):
     """`base` overrides with the subsections of `extra` added."""
     merged = {key: dict(value) for key, value in base.items()}
@@ -250,7 +275,9 @@ def three_d(repeat):
                     "prm/sphere_indentation.prm",
                     with_overrides(LARGE, overrides), n)
                    for n in (1, 2) for label, overrides in OPERATORS]
-    large = whole_runs_in_turn(large_cases, repeat)
+    large_pairs = Pairs("indentation_large_pair", "prm/sphere_indentation.prm",
+                        with_overrides(LARGE, MATRIX_FREE))
+    large = whole_runs_in_turn(large_cases, repeat, between=large_pairs)
     large_rows = []
     for name, _, overrides, n in large_cases:
         r = large[name]
@@ -266,11 +293,14 @@ def three_d(repeat):
     speedup = {label: wall[(label, 1)] / wall[(label, 2)]
                for label, _ in OPERATORS}
     gain = wall[("assembled", 2)] / wall[("matrix-free", 2)]
+    together, bound = large_pairs.bound(wall[("matrix-free", 1)])
     print("\nIndentation at %s dofs\n\n%s\nspeed-up 1 -> 2 processes: "
           "assembled %.2f, matrix-free %.2f; matrix-free on 2 processes "
-          "%.2f times faster" %
+          "%.2f times faster; two 1-process matrix-free runs at once %.1f s "
+          "each: bound %.2f" %
           ("{:,}".format(int(large_cases and large[large_cases[-1][0]]["dofs"])),
-           large_text, speedup["assembled"], speedup["matrix-free"], gain))
+           large_text, speedup["assembled"], speedup["matrix-free"], gain,
+           together, bound))
 
     # step-42 and signorini on its meshes, 2 processes, in turn.
     step42_cases = [("indentation_step42_%s" % label,
@@ -319,17 +349,23 @@ def three_d(repeat):
 
     amg = with_overrides(HERTZ_2D, {"Linear solver": {"Type": "amg cg"}})
     direct = with_overrides(HERTZ_2D, {"Linear solver": {"Type": "direct"}})
+    hertz_pairs = Pairs("hertz_2d_pair", "prm/hertz_cylinder.prm", HERTZ_2D)
     hertz = whole_runs_in_turn(
         [("hertz_2d_np1", "prm/hertz_cylinder.prm", HERTZ_2D, 1),
          ("hertz_2d_np2", "prm/hertz_cylinder.prm", HERTZ_2D, 2),
          ("hertz_2d_direct_np1", "prm/hertz_cylinder.prm", direct, 1),
-         ("hertz_2d_amg_np1", "prm/hertz_cylinder.prm", amg, 1)], repeat)
+         ("hertz_2d_amg_np1", "prm/hertz_cylinder.prm", amg, 1)], repeat,
+        between=hertz_pairs)
     hertz_speedup = hertz["hertz_2d_np1"]["wall"] / hertz["hertz_2d_np2"]["wall"]
+    hertz_together, hertz_bound = hertz_pairs.bound(
+        hertz["hertz_2d_np1"]["wall"])
     print("2D Hertz at %s dofs, automatic: %.1f s on one process, %.1f s on "
-          "two: speed-up %.2f; on one process direct %.1f s, amg cg %.1f s" %
+          "two: speed-up %.2f; two 1-process runs at once %.1f s each: bound "
+          "%.2f; on one process direct %.1f s, amg cg %.1f s" %
           ("{:,}".format(int(hertz["hertz_2d_np1"]["dofs"])),
            hertz["hertz_2d_np1"]["wall"], hertz["hertz_2d_np2"]["wall"],
-           hertz_speedup, hertz["hertz_2d_direct_np1"]["wall"],
+           hertz_speedup, hertz_together, hertz_bound,
+           hertz["hertz_2d_direct_np1"]["wall"],
            hertz["hertz_2d_amg_np1"]["wall"]))
 
     return ("3D scenes (`hertz_sphere.prm` with 6 cycles), final cycle, "
@@ -342,7 +378,10 @@ def three_d(repeat):
             "in turn:\n\n%s\n"
             "Speed-up from 1 to 2 processes: assembled **%.2f**, matrix-free "
             "**%.2f**; on two processes the matrix-free run is **%.2f** times "
-            "faster than the assembled one. step-42 itself (elastic, 6 "
+            "faster than the assembled one. Two 1-process matrix-free runs "
+            "at once, each held to a core of its own, take %.1f s each: what "
+            "the machine's shared memory and caches leave, a speed-up of at "
+            "most **%.2f** from a second process. step-42 itself (elastic, 6 "
             "cycles to 493,287 dofs, 2 processes, run in turn with "
             "signorini's): %.1f s, contact force %.3f N; signorini on the "
             "same meshes: assembled %.1f s (**%.1f times faster**), "
@@ -351,18 +390,20 @@ def three_d(repeat):
             "one process (the checkpoint, written after every cycle, is its "
             "own column):\n\n%s\n"
             "2D Hertz at %s dofs (12 cycles), `automatic` linear solver: "
-            "%.1f s on one process, %.1f s on two: speed-up **%.2f**; on one "
+            "%.1f s on one process, %.1f s on two: speed-up **%.2f** (two "
+            "1-process runs at once: %.1f s each, a bound of %.2f); on one "
             "process direct %.1f s, amg cg %.1f s.\n" %
             ("one run" if repeat == 1 else "medians of %d runs" % repeat,
              ratios, "{:,}".format(int(large[large_cases[-1][0]]["dofs"])),
              large_text, speedup["assembled"], speedup["matrix-free"], gain,
-             step42[0], step42[1],
+             together, bound, step42[0], step42[1],
              ours["indentation_step42_assembled"]["wall"],
              versus["assembled"], mf["wall"], versus["matrix-free"],
              mf["force"], shares_text,
              "{:,}".format(int(hertz["hertz_2d_np1"]["dofs"])),
              hertz["hertz_2d_np1"]["wall"], hertz["hertz_2d_np2"]["wall"],
-             hertz_speedup, hertz["hertz_2d_direct_np1"]["wall"],
+             hertz_speedup, hertz_together, hertz_bound,
+             hertz["hertz_2d_direct_np1"]["wall"],
              hertz["hertz_2d_amg_np1"]["wall"]))
 
 

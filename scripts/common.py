@@ -8,6 +8,7 @@ value of each sweep, puts its runs in FOLDER, and rewrites copies of the
 README and doc/ files it is documented to rewrite, in FOLDER (README.md,
 doc/NAME), instead of the tracked files. It checks that the pipeline runs
 and touches nothing else; its numbers mean nothing."""
+import concurrent.futures
 import csv
 import os
 import re
@@ -101,10 +102,11 @@ class Run:
     process."""
 
 
-def run(work, name, base, settings, check=True, processes=0):
+def run(work, name, base, settings, check=True, processes=0, core=None):
     """Runs `base` (a .prm, relative to the repository) with `settings`
     {subsection: {entry: value}} overriding it, in work/name; under
-    `mpirun -np processes` if processes > 0."""
+    `mpirun -np processes` if processes > 0, or, if `core` is given, as one
+    process under mpirun held to that core alone (`taskset`)."""
     folder = os.path.join(work, name)
     os.makedirs(folder, exist_ok=True)
     for old in ("statistics.csv", "timings.csv"):
@@ -127,7 +129,10 @@ def run(work, name, base, settings, check=True, processes=0):
     for entry in os.listdir(scenes):
         link = os.path.join(work, entry)
         if not os.path.lexists(link):
-            os.symlink(os.path.join(scenes, entry), link)
+            try:
+                os.symlink(os.path.join(scenes, entry), link)
+            except FileExistsError:  # made by a run started beside this one
+                pass
     lines = ["include " + os.path.join(ROOT, base)]
     for section, entries in settings.items():
         lines.append("subsection " + section)
@@ -140,8 +145,13 @@ def run(work, name, base, settings, check=True, processes=0):
     print("  " + name, file=sys.stderr)
     command = [SIGNORINI, prm]
     env = None
-    if processes > 0:
+    if core is not None:
+        # mpirun would bind every one-process run to the same first core.
+        command = ["mpirun", "--bind-to", "none", "-np", "1", "taskset",
+                   "-c", str(core)] + command
+    elif processes > 0:
         command = ["mpirun", "-np", str(processes)] + command
+    if core is not None or processes > 0:
         env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                    OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                    OMPI_MCA_btl_vader_single_copy_mechanism="none")
@@ -162,6 +172,22 @@ def run(work, name, base, settings, check=True, processes=0):
     result.rows = read_table(os.path.join(folder, "statistics.csv"))
     result.timings = read_table(os.path.join(folder, "timings.csv"))
     return result
+
+
+def run_pair(work, name, base, settings):
+    """Two one-process runs of run() at once, each held to a core of its
+    own, in work/NAME-a and work/NAME-b: two processes that share nothing
+    but the machine's memory and caches, so their slowdown against one run
+    alone bounds what a second process can gain. The two Runs, or None on
+    fewer than two cores."""
+    cores = sorted(os.sched_getaffinity(0))
+    if len(cores) < 2:
+        return None
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        started = [pool.submit(run, work, "%s-%s" % (name, suffix), base,
+                               settings, True, 0, core)
+                   for suffix, core in zip("ab", cores)]
+        return [future.result() for future in started]
 
 
 def timer_sections(text):
