@@ -176,10 +176,10 @@ def run(work, name, base, settings, check=True, processes=0, core=None):
 
 def run_pair(work, name, base, settings):
     """Two one-process runs of run() at once, each held to a core of its
-    own, in work/NAME-a and work/NAME-b: two processes that share nothing
-    but the machine's memory and caches, so their slowdown against one run
-    alone bounds what a second process can gain. The two Runs, or None on
-    fewer than two cores."""
+    own, in work/NAME-a and work/NAME-b: two processes that share the
+    machine but no core, so their slowdown against one run alone bounds
+    what a second process can gain. The two Runs, or None on fewer than two
+    cores."""
     cores = sorted(os.sched_getaffinity(0))
     if len(cores) < 2:
         return None
