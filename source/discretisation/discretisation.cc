@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -10,6 +9,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <signorini/discretisation/discretisation.h>
+#include <signorini/discretisation/vertex_values.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
 #include <signorini/mesh_adaptation/mesh_adaptation.h>
@@ -168,10 +168,9 @@ namespace signorini
   {
     auto &distributed =
       dynamic_cast<parallel::distributed::Triangulation<dim> &>(*mesh);
-    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dofs);
-    transfer.prepare_for_serialization(vectors);
-    // The cell values, registered after the vectors; load() unpacks them in
-    // that order.
+    // The vectors (variable-size data), then the cell values (fixed-size);
+    // load() unpacks them in that order.
+    VertexValues<dim>::attach(dofs, vectors);
     distributed.register_data_attach(
       [&cell_data](const auto &cell, const auto) {
         const float       value = cell_data(cell->active_cell_index());
@@ -200,11 +199,9 @@ namespace signorini
     mesh = std::move(loaded);
     setup_dofs();
 
-    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dofs);
     for (auto *vector : vectors)
       vector->reinit(owned_dofs, communicator);
-    auto to_fill = vectors;
-    transfer.deserialize(to_fill);
+    VertexValues<dim>::restore(dofs, vectors);
 
     auto &distributed =
       dynamic_cast<parallel::distributed::Triangulation<dim> &>(*mesh);

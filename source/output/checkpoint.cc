@@ -378,16 +378,26 @@ namespace signorini
     if (fault.empty() && file_system_full(directory))
       fault =
         "cannot write '" + mesh_file(cycle) + "*': " + std::strerror(ENOSPC);
-    // The pieces deal.II and p4est write.
-    for (const std::string suffix : {".mesh", ".mesh.info", ".mesh_fixed.data"})
+    // The pieces deal.II and p4est write; a directory in the place of one
+    // failed its write and may have kept others from being written.
+    std::vector<std::string> names;
+    for (const std::string suffix :
+         {".mesh", ".mesh.info", ".mesh_fixed.data", ".mesh_variable.data"})
+      names.push_back("checkpoint-" + Utilities::int_to_string(cycle, 2) +
+                      suffix);
+    for (const auto &name : names)
       {
-        const std::string name =
-          "checkpoint-" + Utilities::int_to_string(cycle, 2) + suffix;
+        std::error_code error;
         if (fault.empty() &&
-            std::find(pieces.begin(), pieces.end(), name) == pieces.end())
-          fault = "cannot write '" + directory + "/" + name + "'" +
-                  (save_failure.empty() ? "" : ": " + save_failure);
+            std::filesystem::is_directory(directory + "/" + name, error))
+          fault = "cannot write '" + directory + "/" + name +
+                  "': " + std::strerror(EISDIR);
       }
+    for (const auto &name : names)
+      if (fault.empty() &&
+          std::find(pieces.begin(), pieces.end(), name) == pieces.end())
+        fault = "cannot write '" + directory + "/" + name + "'" +
+                (save_failure.empty() ? "" : ": " + save_failure);
     if (fault.empty() && !save_failure.empty())
       fault = "cannot write '" + mesh_file(cycle) + "': " + save_failure;
     if (fault.empty())

@@ -17,9 +17,12 @@ namespace signorini
 {
   namespace
   {
-    const std::string manifest_magic = "signorini checkpoint 2\n";
+    const std::string manifest_magic = "signorini checkpoint 3\n";
     /** The first line of the state files of signorini before checksums. */
     const std::string unchecked_magic = "signorini checkpoint 1\n";
+    /** The first line of those whose mesh files held the vectors cell by
+     * cell (deal.II's SolutionTransfer), before VertexValues. */
+    const std::string cell_values_magic = "signorini checkpoint 2\n";
     /** "crc32 XXXXXXXX\n", the last line. */
     constexpr std::size_t trailer_size = 15;
 
@@ -175,6 +178,9 @@ namespace signorini
   std::string
   CheckpointManifest::read(const std::string &text)
   {
+    const std::string earlier =
+      "written by an earlier signorini, which stored the solution cell by "
+      "cell";
     const std::size_t size = text.size();
     const bool        has_trailer =
       size >= manifest_magic.size() + trailer_size &&
@@ -188,6 +194,8 @@ namespace signorini
                  " bytes, without the checksum that ends it)";
         if (text.rfind(unchecked_magic, 0) == 0)
           return "written by an earlier signorini, without checksums";
+        if (text.rfind(cell_values_magic, 0) == 0)
+          return earlier;
         if (size == 0)
           return "empty";
         return "not a signorini checkpoint";
@@ -197,6 +205,8 @@ namespace signorini
     if (saved != crc_of(text.data(), size - trailer_size))
       return "damaged (its contents do not match the checksum written with "
              "them)";
+    if (text.rfind(cell_values_magic, 0) == 0)
+      return earlier;
 
     ManifestReader reader(text, size - trailer_size);
     std::string    line;

@@ -43,7 +43,7 @@ damage() {
   esac
 }
 
-for piece in mesh mesh.info mesh_fixed.data state; do
+for piece in mesh mesh.info mesh_fixed.data mesh_variable.data state; do
   for how in truncated changed deleted; do
     rm -rf out && cp -r stopped out
     damage out/$name.$piece $how

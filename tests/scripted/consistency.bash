@@ -32,7 +32,8 @@ consistent() {
   done
   if ls "$dir"/checkpoint-* > /dev/null 2>&1; then
     name=$(printf 'checkpoint-%02d' "$LAST")
-    for file in $name.mesh $name.mesh.info $name.mesh_fixed.data $name.state; do
+    for file in $name.mesh $name.mesh.info $name.mesh_fixed.data \
+      $name.mesh_variable.data $name.state; do
       [ -f "$dir/$file" ] || faults+=("$file missing")
     done
   fi

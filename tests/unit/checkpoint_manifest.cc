@@ -121,6 +121,23 @@ main()
   std::cout << "format 1: "
             << CheckpointManifest().read("signorini checkpoint 1\ncycle 3\n")
             << '\n';
+  std::cout << "format 2: "
+            << CheckpointManifest().read("signorini checkpoint 2\ncycle 3\n")
+            << '\n';
+  {
+    // A whole state file of format 2: its own checksum matches.
+    const std::string body =
+      "signorini checkpoint 2\n" +
+      text.substr(text.find('\n') + 1, text.size() - 15 - text.find('\n') - 1);
+    write_file(directory + "/format2.txt", body);
+    char crc[16];
+    std::snprintf(crc,
+                  sizeof(crc),
+                  "crc32 %08x\n",
+                  checksum_of_file(directory + "/format2.txt").crc);
+    std::cout << "format 2, whole: " << CheckpointManifest().read(body + crc)
+              << '\n';
+  }
   std::cout << "other text: " << CheckpointManifest().read("hello\n") << '\n';
 
   std::cout << "verify_pieces:\n";
