@@ -8,6 +8,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <signorini/base/owned_values.h>
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/discretisation/vertex_values.h>
 #include <signorini/input/input_error.h>
@@ -344,8 +345,7 @@ namespace signorini
     LinearAlgebra::distributed::Vector<double> copy(owned_dofs,
                                                     relevant_dofs,
                                                     communicator);
-    for (const auto i : owned_dofs)
-      copy(i) = vector(i);
+    copy_owned(vector, owned_dofs, copy);
     copy.update_ghost_values();
     return copy;
   }

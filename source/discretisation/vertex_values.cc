@@ -44,8 +44,8 @@ namespace signorini
     // Which vertices each locally owned cell carries.
     const IndexSet            &owned = dofs.locally_owned_dofs();
     std::vector<bool>          taken(owned.n_elements(), false);
-    std::vector<unsigned char> carried(dofs.get_triangulation().n_active_cells(),
-                                       0);
+    std::vector<unsigned char> carried(
+      dofs.get_triangulation().n_active_cells(), 0);
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
@@ -98,10 +98,11 @@ namespace signorini
     for (auto &vector : gathered)
       vector.reinit(owned, relevant, comm);
 
-    auto &mesh = distributed(dofs);
-    const unsigned int handle = mesh.register_data_attach(
-      [](const CellIterator<dim> &, const auto) { return std::vector<char>(); },
-      /*returns_variable_size_data=*/true);
+    auto              &mesh = distributed(dofs);
+    const unsigned int handle =
+      mesh.register_data_attach([](const CellIterator<dim> &,
+                                   const auto) { return std::vector<char>(); },
+                                /*returns_variable_size_data=*/true);
     mesh.notify_ready_to_unpack(
       handle,
       [&](const CellIterator<dim> &mesh_cell,

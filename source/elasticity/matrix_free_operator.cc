@@ -3,6 +3,7 @@
 
 #include <signorini/base/failures.h>
 #include <signorini/base/memory.h>
+#include <signorini/base/owned_values.h>
 #include <signorini/elasticity/assembled_operator.h>
 #include <signorini/elasticity/matrix_free_operator.h>
 #include <signorini/input/input_error.h>
@@ -144,17 +145,14 @@ namespace signorini
   void
   MatrixFreeOperator<dim>::to_la(const VectorType &in, LAVector &out) const
   {
-    for (const auto i : discretisation.locally_owned_dofs())
-      out(i) = in(i);
+    copy_owned(in, discretisation.locally_owned_dofs(), out);
   }
 
   template <int dim>
   void
   MatrixFreeOperator<dim>::from_la(const LAVector &in, VectorType &out) const
   {
-    for (const auto i : discretisation.locally_owned_dofs())
-      out(i) = in(i);
-    out.compress(VectorOperation::insert);
+    copy_owned(in, discretisation.locally_owned_dofs(), out);
   }
 
   template <int dim>
