@@ -6,7 +6,6 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <Epetra_MultiVector.h>
-
 #include <algorithm>
 
 namespace signorini
@@ -27,8 +26,8 @@ namespace signorini
     if (owned.n_elements() == 0 || !owned.is_contiguous())
       return nullptr;
     const auto &values = vector.trilinos_vector();
-    const int   first  = values.Map().LID(
-      static_cast<dealii::TrilinosWrappers::types::int_type>(
+    const int   first =
+      values.Map().LID(static_cast<dealii::TrilinosWrappers::types::int_type>(
         owned.nth_index_in_set(0)));
     return first < 0 ? nullptr : values[0] + first;
   }
@@ -36,8 +35,8 @@ namespace signorini
   /** The locally owned entries of @p in (indices @p owned) into those of
    * @p out, which has the same locally owned indices. */
   inline void
-  copy_owned(const dealii::TrilinosWrappers::MPI::Vector  &in,
-             const dealii::IndexSet                        &owned,
+  copy_owned(const dealii::TrilinosWrappers::MPI::Vector        &in,
+             const dealii::IndexSet                             &owned,
              dealii::LinearAlgebra::distributed::Vector<double> &out)
   {
     if (const double *values = owned_values(in, owned))
