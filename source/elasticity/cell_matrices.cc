@@ -15,10 +15,37 @@ namespace signorini
 // AVX-512 ran the two-double copy (an AMD EPYC, Zen 3: CG of the 1.49M-dof
 // run 19.7 -> 17.1 s on one process, the whole run 49.5 -> 45.6 s).
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#  define SIGNORINI_AVX512 "avx512f"
+#  define SIGNORINI_AVX2 "arch=x86-64-v3"
 #  define SIGNORINI_WIDE_KERNEL \
-    __attribute__((target_clones("avx512f", "arch=x86-64-v3", "default")))
+    __attribute__((target_clones(SIGNORINI_AVX512, SIGNORINI_AVX2, "default")))
+
+    // The same choice, by the same rule, told by name.
+    __attribute__((target("default"))) const char *
+    instruction_set()
+    {
+      return "default";
+    }
+
+    __attribute__((target(SIGNORINI_AVX2))) const char *
+    instruction_set()
+    {
+      return "x86-64-v3";
+    }
+
+    __attribute__((target(SIGNORINI_AVX512))) const char *
+    instruction_set()
+    {
+      return "avx512f";
+    }
 #else
 #  define SIGNORINI_WIDE_KERNEL
+
+    const char *
+    instruction_set()
+    {
+      return "default";
+    }
 #endif
 
     /** y = K x, K stored by columns: a column's n entries times x_j. */
@@ -67,7 +94,15 @@ namespace signorini
           y[i] += K[j * n + i] * x[j];
     }
 #undef SIGNORINI_WIDE_KERNEL
+#undef SIGNORINI_AVX2
+#undef SIGNORINI_AVX512
   } // namespace
+
+  const char *
+  cell_kernel_instruction_set()
+  {
+    return instruction_set();
+  }
 
   void
   CellMatrices::reinit(const unsigned int size)

@@ -15,7 +15,8 @@ namespace signorini
    * On a Kelly-refined box mesh that is one matrix per refinement level,
    * and applying one (n x n, n = 24 for a hexahedron) is a few dozen fused
    * multiply-adds on the wide registers the processor has (AVX-512, AVX2
-   * or SSE2, chosen when the program starts), where evaluating the cell at
+   * with FMA, or SSE2, chosen by its features when the program starts:
+   * cell_kernel_instruction_set()), where evaluating the cell at
    * its quadrature points is a few thousand scalar operations.
    */
   class CellMatrices
@@ -59,6 +60,12 @@ namespace signorini
     std::map<Key, unsigned int> index_of;
     std::vector<double>         entries;
   };
+
+  /** The copy of the cell kernels this processor runs: "avx512f",
+   * "x86-64-v3" (AVX2 and FMA) or "default" (SSE2), chosen by the
+   * processor's features when the program starts. */
+  const char *
+  cell_kernel_instruction_set();
 } // namespace signorini
 
 #endif
