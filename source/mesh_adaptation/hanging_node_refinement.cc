@@ -4,6 +4,7 @@
 #include <deal.II/numerics/solution_transfer.h>
 
 #include <signorini/mesh_adaptation/hanging_node_refinement.h>
+#include <signorini/mesh_adaptation/partition_balance.h>
 
 namespace signorini
 {
@@ -72,7 +73,7 @@ namespace signorini
           dof_handler);
         triangulation->prepare_coarsening_and_refinement();
         transfer.prepare_for_coarsening_and_refinement(vectors);
-        triangulation->execute_coarsening_and_refinement();
+        execute_refinement(*distributed, refinement.imbalance_tolerance);
         setup_system();
         carried.assign(vectors.size(),
                        VectorType(dof_handler.locally_owned_dofs(), comm));

@@ -55,6 +55,17 @@ namespace signorini
       "unweighted, the error of the (r, z) section, which refines near the "
       "axis as much as away from it (for a quantity on the axis, such as "
       "the peak pressure of a sphere).");
+    prm.declare_entry(
+      "Imbalance tolerance",
+      entry_text::of(defaults.imbalance_tolerance),
+      Patterns::Double(0.),
+      "Several processes, quadrilaterals/hexahedra: a refined mesh keeps "
+      "its partition (each process its cells) unless a process would own "
+      "more than (1 + this) times the mean number of cells; then it is "
+      "balanced anew. Cells that change processes are rebuilt there level "
+      "by level, which on the 2D Hertz scene made a refinement on two "
+      "processes slower than on one; an imbalance slows the cycle's solve "
+      "by up to this fraction. 0 balances every refined mesh.");
     prm.leave_subsection();
   }
 
@@ -65,10 +76,11 @@ namespace signorini
     n_cycles = prm.get_integer("Number of cycles");
     strategy =
       strategies.value(prm.get("Strategy"), "Mesh refinement/Strategy");
-    refine_fraction  = prm.get_double("Refine fraction");
-    coarsen_fraction = prm.get_double("Coarsen fraction");
-    kelly_weight     = kelly_weights.value(prm.get("Kelly weight"),
+    refine_fraction     = prm.get_double("Refine fraction");
+    coarsen_fraction    = prm.get_double("Coarsen fraction");
+    kelly_weight        = kelly_weights.value(prm.get("Kelly weight"),
                                        "Mesh refinement/Kelly weight");
+    imbalance_tolerance = prm.get_double("Imbalance tolerance");
     prm.leave_subsection();
     if (refine_fraction + coarsen_fraction > 1.)
       throw InputError("Mesh refinement/Coarsen fraction",

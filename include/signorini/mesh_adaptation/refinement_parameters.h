@@ -33,6 +33,10 @@ namespace signorini
     double coarsen_fraction = 0.03;
     /** kelly, axisymmetric models: the weight of the indicators. */
     KellyWeight kelly_weight = KellyWeight::revolution;
+    /** Several processes: how far above the mean number of cells a
+     * process's share of a refined mesh may lie before the mesh is
+     * repartitioned (see execute_refinement()). */
+    double imbalance_tolerance = 0.1;
 
     /** Declares the entries, with the defaults of a default-constructed
      * instance. */
