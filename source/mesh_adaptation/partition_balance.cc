@@ -2,9 +2,8 @@
 
 #include <signorini/mesh_adaptation/partition_balance.h>
 
-#include <boost/signals2/connection.hpp>
-
 #include <algorithm>
+#include <boost/signals2/connection.hpp>
 #include <numeric>
 
 namespace signorini
@@ -45,8 +44,8 @@ namespace signorini
     // cumulative weights along p4est's curve then reach the same total on
     // every process, so the balanced partition is the present one. The sum
     // stays below 2^30 per process, well inside p4est's 64-bit sums.
-    const double       mine = cells[Utilities::MPI::this_mpi_process(
-      mesh.get_communicator())];
+    const double mine =
+      cells[Utilities::MPI::this_mpi_process(mesh.get_communicator())];
     const unsigned int weight =
       static_cast<unsigned int>(std::max(1., (1u << 30) / std::max(mine, 1.)));
     const boost::signals2::scoped_connection connection =

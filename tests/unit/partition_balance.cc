@@ -34,12 +34,12 @@ namespace
 {
   template <int dim>
   void
-  refine(const std::string                       &what,
+  refine(const std::string                             &what,
          const std::function<bool(const Point<dim> &)> &flag,
-         const double                             tolerance,
-         const bool                               expect_balanced)
+         const double                                   tolerance,
+         const bool                                     expect_balanced)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> mesh(comm);
     GridGenerator::hyper_cube(mesh, 0., 1.);
     mesh.refine_global(dim == 2 ? 4 : 3);
@@ -66,16 +66,16 @@ namespace
             (cell->level() > 0 && owned_before.count(cell->parent()->id()));
           moved += stayed ? 0 : 1;
         }
-    moved             = Utilities::MPI::sum(moved, comm);
-    const auto actual = Utilities::MPI::all_gather(comm, owned);
+    moved               = Utilities::MPI::sum(moved, comm);
+    const auto   actual = Utilities::MPI::all_gather(comm, owned);
     const double mean =
       std::accumulate(actual.begin(), actual.end(), 0.) / actual.size();
     const double share = *std::max_element(actual.begin(), actual.end()) / mean;
 
     if (first_process())
       {
-        std::cout << dim << "D, " << what << ", tolerance " << tolerance
-                  << ": " << mesh.n_global_active_cells() << " cells\n"
+        std::cout << dim << "D, " << what << ", tolerance " << tolerance << ": "
+                  << mesh.n_global_active_cells() << " cells\n"
                   << "  predicted per process:";
         for (const double n : predicted)
           std::cout << ' ' << n;
