@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <boost/signals2/connection.hpp>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace signorini
@@ -40,14 +42,17 @@ namespace signorini
         return cells.size() > 1;
       }
 
-    // Every process's cells weigh 2^30 / (its number of cells): the
-    // cumulative weights along p4est's curve then reach the same total on
-    // every process, so the balanced partition is the present one. The sum
-    // stays below 2^30 per process, well inside p4est's 64-bit sums.
+    // Every process's cells weigh W / (its number of cells), W the largest
+    // unsigned int: the cumulative weights along p4est's curve then reach
+    // the same total on every process, so the balanced partition is the
+    // present one, up to the weights' rounding (n^2 / W cells for n cells
+    // per process: none below 6e4 cells, about 230 at a million). The sum
+    // stays below W per process, well inside p4est's 64-bit sums.
     const double mine =
       cells[Utilities::MPI::this_mpi_process(mesh.get_communicator())];
-    const unsigned int weight =
-      static_cast<unsigned int>(std::max(1., (1u << 30) / std::max(mine, 1.)));
+    const double       most_weight = std::numeric_limits<unsigned int>::max();
+    const unsigned int weight      = static_cast<unsigned int>(
+      std::max(1., std::floor(most_weight / std::max(mine, 1.))));
     const boost::signals2::scoped_connection connection =
       mesh.signals.weight.connect(
         [weight](const auto &, const auto) { return weight; });
