@@ -101,9 +101,25 @@ namespace signorini
         traction = uniform_traction.get();
       }
 
+    // Only the cells with a load: the others add nothing (the constraints'
+    // inhomogeneities do not enter a vector alone), and in a scene loaded
+    // at its supports and its contact alone, such as sphere_indentation,
+    // the loop over every cell was 2 % of a 3D run.
+    const bool body_force = !vanishes(*bc.body_force);
+    const auto loaded     = [&](const auto &cell) {
+      if (body_force)
+        return true;
+      if (bc.traction_ids.empty() || !cell->at_boundary())
+        return false;
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            bc.traction_ids.count(cell->face(f)->boundary_id()))
+          return true;
+      return false;
+    };
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && loaded(cell))
         {
           cell_load(cell, fe_values, fe_face_values, cell_vector);
           cell->get_dof_indices(dof_indices);
