@@ -16,6 +16,16 @@ namespace signorini
   }
 
   template <int dim>
+  bool
+  Loads<dim>::traction_face(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    f) const
+  {
+    return cell->face(f)->at_boundary() &&
+           boundary_conditions.traction_ids.count(cell->face(f)->boundary_id());
+  }
+
+  template <int dim>
   void
   Loads<dim>::cell_load(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -46,8 +56,7 @@ namespace signorini
     if (!vanishes(*bc.body_force))
       integrate(fe_values, *bc.body_force);
     for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() &&
-          bc.traction_ids.count(cell->face(f)->boundary_id()))
+      if (traction_face(cell, f))
         {
           fe_face_values.reinit(cell, f);
           integrate(fe_face_values, *traction);
@@ -82,8 +91,7 @@ namespace signorini
              discretisation.dof_handler().active_cell_iterators())
           if (cell->is_locally_owned())
             for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  bc.traction_ids.count(cell->face(f)->boundary_id()))
+              if (traction_face(cell, f))
                 {
                   fe_face_values.reinit(cell, f);
                   for (const unsigned int q :
@@ -112,8 +120,7 @@ namespace signorini
       if (bc.traction_ids.empty() || !cell->at_boundary())
         return false;
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            bc.traction_ids.count(cell->face(f)->boundary_id()))
+        if (traction_face(cell, f))
           return true;
       return false;
     };

@@ -50,6 +50,12 @@ namespace signorini
     }
 
   private:
+    /** Whether face @p f of @p cell carries the traction. */
+    bool
+    traction_face(
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      const unsigned int                                            f) const;
+
     const BoundaryConditions<dim>         &boundary_conditions;
     const Discretisation<dim>             &discretisation;
     const dealii::Function<dim>           *traction = nullptr;
