@@ -163,7 +163,7 @@ namespace signorini
   }
 
   template <int dim>
-  template <bool as_given>
+  template <bool as_given, typename CellNumber>
   void
   ElasticLevelOperator<dim>::apply_cells(
     const MatrixFree<dim, double>               &data,
@@ -175,7 +175,7 @@ namespace signorini
     // the operator was set up by_vertices, without a MatrixFree).
     std::unique_ptr<Evaluation> phi;
     constexpr unsigned int      n = Evaluation::static_dofs_per_cell;
-    double                      x[n], y[n];
+    CellNumber                  x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
       if (direct[cell])
         {
@@ -240,7 +240,7 @@ namespace signorini
   }
 
   template <int dim>
-  template <bool as_given>
+  template <bool as_given, typename CellNumber>
   void
   ElasticLevelOperator<dim>::cell_loop(VectorType       &dst,
                                        const VectorType &src) const
@@ -251,7 +251,10 @@ namespace signorini
     if (!had_ghosts)
       src.update_ghost_values();
     dst = 0.;
-    apply_cells<as_given>(matrix_free, dst, src, {0, matrix_of_cell.size()});
+    apply_cells<as_given, CellNumber>(matrix_free,
+                                      dst,
+                                      src,
+                                      {0, matrix_of_cell.size()});
     dst.compress(VectorOperation::add);
     if (!had_ghosts)
       src.zero_out_ghost_values();
@@ -260,6 +263,22 @@ namespace signorini
   template <int dim>
   void
   ElasticLevelOperator<dim>::vmult(VectorType &dst, const VectorType &src) const
+  {
+    apply<double>(dst, src);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::vmult_single(VectorType       &dst,
+                                          const VectorType &src) const
+  {
+    apply<float>(dst, src);
+  }
+
+  template <int dim>
+  template <typename CellNumber>
+  void
+  ElasticLevelOperator<dim>::apply(VectorType &dst, const VectorType &src) const
   {
     const VectorType *input = &src;
     if (!held.empty())
@@ -277,7 +296,7 @@ namespace signorini
           }
         input = &projected;
       }
-    cell_loop<false>(dst, *input);
+    cell_loop<false, CellNumber>(dst, *input);
     // P^T: a held row's force goes to the dofs it is solved from.
     for (const auto &[dof, entries] : held)
       for (const auto &[master, weight] : entries)
@@ -305,7 +324,7 @@ namespace signorini
   ElasticLevelOperator<dim>::internal_force(VectorType       &dst,
                                             const VectorType &u) const
   {
-    cell_loop<true>(dst, u);
+    cell_loop<true, double>(dst, u);
     for (const unsigned int i : constrained)
       dst.local_element(i) = 0.;
   }

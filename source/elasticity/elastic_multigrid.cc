@@ -68,6 +68,7 @@ namespace signorini
     mg_matrix.reset();
     transfer.clear();
     transfer_ready = false;
+    applied.resize(0, 0);
     operators.resize(0, 0);
     constraints.resize(0, 0);
     dofs.clear();
@@ -140,6 +141,9 @@ namespace signorini
         operators[level]->reinit(mapping, *dofs.back(), level_constraints);
       }
     operators[top] = fine;
+    applied.resize(0, top);
+    for (unsigned int level = 0; level <= top; ++level)
+      applied[level] = std::make_shared<SinglePrecisionLevel>(operators[level]);
 
     std::vector<const DoFHandler<dim> *>           level_dofs;
     std::vector<const AffineConstraints<double> *> level_constraints;
@@ -245,8 +249,8 @@ namespace signorini
         data[level].smoothing_range     = smoothing_range;
         data[level].eig_cg_n_iterations = eigenvalue_cg_steps;
       }
-    smoother.initialize(operators, data);
-    mg_matrix.initialize(operators);
+    smoother.initialize(applied, data);
+    mg_matrix.initialize(applied);
     multigrid = std::make_unique<Multigrid<VectorType>>(
       mg_matrix, *coarse, transfer, smoother, smoother);
     preconditioner =

@@ -51,6 +51,11 @@ namespace signorini
     void
     apply(const unsigned int index, const double *x, double *y) const;
 
+    /** y = K_index x in single precision (the matrix rounded to float):
+     * twice the entries in a register, for a preconditioner. */
+    void
+    apply(const unsigned int index, const float *x, float *y) const;
+
     /** More distinct shapes than this (a distorted mesh) are evaluated at
      * quadrature points instead. */
     static constexpr unsigned int max_matrices = 512;
@@ -59,6 +64,8 @@ namespace signorini
     unsigned int                n = 0;
     std::map<Key, unsigned int> index_of;
     std::vector<double>         entries;
+    /** The same entries rounded to float. */
+    std::vector<float> single_entries;
   };
 
   /** The copy of the cell kernels this processor runs: "avx512f",

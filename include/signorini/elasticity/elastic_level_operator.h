@@ -90,6 +90,13 @@ namespace signorini
     void
     vmult(VectorType &dst, const VectorType &src) const;
 
+    /** vmult() with the cells' shape matrices applied in single precision
+     * (the vectors, the constraints and the cells without a shape matrix
+     * in double): about 1e-7 relative, twice the entries per register, for
+     * the multigrid's smoothing and residuals. */
+    void
+    vmult_single(VectorType &dst, const VectorType &src) const;
+
     void
     Tvmult(VectorType &dst, const VectorType &src) const;
 
@@ -141,6 +148,11 @@ namespace signorini
     get_dof_handler() const;
 
   private:
+    /** dst = operator * src, the shape matrices applied in CellNumber. */
+    template <typename CellNumber>
+    void
+    apply(VectorType &dst, const VectorType &src) const;
+
     /** The cell's stiffness times its dof values (in place): its shape's
      * matrix where it has one, else apply_at_quadrature_points(). */
     void
@@ -179,8 +191,9 @@ namespace signorini
     /** dst += K src on @p cells: the `direct` cells by their matrix, the
      * `resolved` ones by their matrix and constraint lines (unless
      * @p as_given), the others through FEEvaluation, which reads @p src with
-     * the constraints resolved, or @p as_given. */
-    template <bool as_given>
+     * the constraints resolved, or @p as_given; the shape matrices applied
+     * in CellNumber. */
+    template <bool as_given, typename CellNumber>
     void
     apply_cells(const dealii::MatrixFree<dim, double>       &data,
                 VectorType                                  &dst,
@@ -189,7 +202,7 @@ namespace signorini
 
     /** dst = K src (or as given) over all cells: src's ghosts imported for
      * the loop, dst's added to their owners. */
-    template <bool as_given>
+    template <bool as_given, typename CellNumber>
     void
     cell_loop(VectorType &dst, const VectorType &src) const;
 

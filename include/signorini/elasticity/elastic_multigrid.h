@@ -25,8 +25,9 @@ namespace signorini
    * levels are the fine mesh coarsened once, twice, ... down to the coarse
    * mesh (coarsening_sequence), connected by LevelTransfer, each with its
    * hanging nodes and the homogeneous Dirichlet data. Chebyshev smoothing
-   * (degree 3) on the inverse diagonal; the coarsest level solved directly
-   * (Trilinos Amesos KLU) on its assembled matrix.
+   * (degree 3) on the inverse diagonal, the levels' cell matrices applied
+   * in single precision; the coarsest level solved directly (Trilinos
+   * Amesos KLU) on its assembled matrix.
    *
    * Contact on the coarser levels: the fine level has its held lines and
    * springs exactly; a coarser level has the springs, and the held nodes as
@@ -86,8 +87,53 @@ namespace signorini
     clear();
 
   private:
+    /**
+     * A level's operator as the V-cycle applies it, in its smoothing and
+     * its residuals: with the cells' shape matrices in single precision
+     * (LevelOperator::vmult_single()). A preconditioner needs no more than
+     * that; CG's own products and residuals stay in double.
+     */
+    class SinglePrecisionLevel : public dealii::Subscriptor
+    {
+    public:
+      using value_type = double;
+
+      explicit SinglePrecisionLevel(std::shared_ptr<const LevelOperator> op)
+        : op(std::move(op))
+      {
+      }
+
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        op->vmult_single(dst, src);
+      }
+
+      void
+      Tvmult(VectorType &dst, const VectorType &src) const
+      {
+        op->vmult_single(dst, src);
+      }
+
+      dealii::types::global_dof_index
+      m() const
+      {
+        return op->m();
+      }
+
+      double
+      el(const dealii::types::global_dof_index i,
+         const dealii::types::global_dof_index j) const
+      {
+        return op->el(i, j);
+      }
+
+    private:
+      std::shared_ptr<const LevelOperator> op;
+    };
+
     using Smoother =
-      dealii::PreconditionChebyshev<LevelOperator,
+      dealii::PreconditionChebyshev<SinglePrecisionLevel,
                                     VectorType,
                                     dealii::DiagonalMatrix<VectorType>>;
 
@@ -96,10 +142,12 @@ namespace signorini
     std::vector<std::unique_ptr<dealii::DoFHandler<dim>>>          dofs;
     dealii::MGLevelObject<dealii::AffineConstraints<double>>       constraints;
     dealii::MGLevelObject<std::shared_ptr<LevelOperator>>          operators;
-    LevelTransfer<dim>                                             transfer;
+    /** The operators as the V-cycle applies them. */
+    dealii::MGLevelObject<std::shared_ptr<SinglePrecisionLevel>> applied;
+    LevelTransfer<dim>                                           transfer;
     bool                           transfer_ready = false;
     dealii::mg::Matrix<VectorType> mg_matrix;
-    dealii::MGSmootherPrecondition<LevelOperator, Smoother, VectorType>
+    dealii::MGSmootherPrecondition<SinglePrecisionLevel, Smoother, VectorType>
                                                             smoother;
     dealii::TrilinosWrappers::SparseMatrix                  coarse_matrix;
     dealii::SolverControl                                   coarse_control;
