@@ -35,9 +35,9 @@ namespace signorini
     };
 
     /** Chebyshev smoothing: degree 3 over the upper 1/20 of the spectrum
-     * of D^-1 A, its largest eigenvalue estimated by 12 CG steps (degree
-     * 5 took 25 % fewer CG iterations but 20 % more time: 165k dofs,
-     * sphere_indentation's cycle 4). */
+     * of D^-1 A, its largest eigenvalue estimated by 12 CG steps once per
+     * mesh (degree 5 took 25 % fewer CG iterations but 20 % more time:
+     * 165k dofs, sphere_indentation's cycle 4). */
     constexpr unsigned int chebyshev_degree    = 3;
     constexpr double       smoothing_range     = 20.;
     constexpr unsigned int eigenvalue_cg_steps = 12;
@@ -68,6 +68,7 @@ namespace signorini
     mg_matrix.reset();
     transfer.clear();
     transfer_ready = false;
+    max_eigenvalues.clear();
     applied.resize(0, 0);
     operators.resize(0, 0);
     constraints.resize(0, 0);
@@ -245,11 +246,30 @@ namespace signorini
           std::make_shared<DiagonalMatrix<VectorType>>();
         data[level].preconditioner->get_vector() =
           operators[level]->inverse_diagonal();
-        data[level].degree              = chebyshev_degree;
-        data[level].smoothing_range     = smoothing_range;
-        data[level].eig_cg_n_iterations = eigenvalue_cg_steps;
+        data[level].degree          = chebyshev_degree;
+        data[level].smoothing_range = smoothing_range;
+        // Estimated at the first update of these levels; later ones (a
+        // Newton step's contact, which changes a few nodes' rows of D^-1 A
+        // but not its range) reuse the estimate.
+        data[level].eig_cg_n_iterations =
+          max_eigenvalues.empty() ? eigenvalue_cg_steps : 0;
+        data[level].max_eigenvalue =
+          max_eigenvalues.empty() ? 1. : max_eigenvalues[level];
       }
     smoother.initialize(applied, data);
+    if (max_eigenvalues.empty())
+      {
+        // Levels 1 to top smooth (0 is solved directly).
+        max_eigenvalues.assign(top + 1, 1.);
+        for (unsigned int level = 1; level <= top; ++level)
+          {
+            VectorType layout;
+            operators[level]->initialize_dof_vector(layout);
+            max_eigenvalues[level] = smoother.smoothers[level]
+                                       .estimate_eigenvalues(layout)
+                                       .max_eigenvalue_estimate;
+          }
+      }
     mg_matrix.initialize(applied);
     multigrid = std::make_unique<Multigrid<VectorType>>(
       mg_matrix, *coarse, transfer, smoother, smoother);

@@ -142,6 +142,10 @@ namespace signorini
     std::vector<std::unique_ptr<dealii::DoFHandler<dim>>>          dofs;
     dealii::MGLevelObject<dealii::AffineConstraints<double>>       constraints;
     dealii::MGLevelObject<std::shared_ptr<LevelOperator>>          operators;
+    /** Per level, the largest eigenvalue of D^-1 A the smoother was set
+     * up with at the first update() since setup() (times 1.2), which the
+     * later updates reuse. */
+    std::vector<double> max_eigenvalues;
     /** The operators as the V-cycle applies them. */
     dealii::MGLevelObject<std::shared_ptr<SinglePrecisionLevel>> applied;
     LevelTransfer<dim>                                           transfer;
