@@ -26,6 +26,22 @@ namespace signorini
   }
 
   template <int dim>
+  bool
+  Loads<dim>::loaded(
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
+  {
+    const auto &bc = boundary_conditions;
+    if (!vanishes(*bc.body_force))
+      return true;
+    if (bc.traction_ids.empty() || !cell->at_boundary())
+      return false;
+    for (const unsigned int f : cell->face_indices())
+      if (traction_face(cell, f))
+        return true;
+    return false;
+  }
+
+  template <int dim>
   void
   Loads<dim>::cell_load(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -113,17 +129,6 @@ namespace signorini
     // inhomogeneities do not enter a vector alone), and in a scene loaded
     // at its supports and its contact alone, such as sphere_indentation,
     // the loop over every cell was 2 % of a 3D run.
-    const bool body_force = !vanishes(*bc.body_force);
-    const auto loaded     = [&](const auto &cell) {
-      if (body_force)
-        return true;
-      if (bc.traction_ids.empty() || !cell->at_boundary())
-        return false;
-      for (const unsigned int f : cell->face_indices())
-        if (traction_face(cell, f))
-          return true;
-      return false;
-    };
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && loaded(cell))

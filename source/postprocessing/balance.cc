@@ -31,10 +31,18 @@ namespace signorini
                                      discretisation.face_quadrature(),
                                      Loads<dim>::update_flags());
     const unsigned int                   n = fe.n_dofs_per_cell();
-    Vector<double>                       cell_load(n), internal(n);
+    Vector<double>                       cell_load(n), internal(n), values(n);
     std::vector<types::global_dof_index> dof_indices(n);
 
     const auto displacement = discretisation.relevant_copy(u);
+
+    // The internal force K u of a cell by its shape's stiffness matrix
+    // where cells share shapes (boxes, straight-sided adaptive meshes:
+    // computed once per shape), else at the quadrature points (curved
+    // cells, which rarely repeat). At 1.49M dofs in 3D the quadrature
+    // points took 1.8 s of a 32 s run on one process.
+    CellStiffness<dim> stiffness(material);
+    unsigned int       hits = 0, misses = 0;
 
     Tensor<1, dim> applied, reaction;
     double         energy = 0.;
@@ -42,10 +50,31 @@ namespace signorini
          discretisation.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          loads.cell_load(cell, fe_values, fe_face_values, cell_load);
-          energy +=
-            cell_internal_force(material, fe_values, displacement, internal);
           cell->get_dof_indices(dof_indices);
+          const FullMatrix<double> *matrix = stiffness.cached(cell);
+          if (matrix)
+            ++hits;
+          else if (++misses <= 64 + hits / 2)
+            matrix = &stiffness.matrix(cell, fe_values);
+          if (matrix)
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                values(i) = displacement(dof_indices[i]);
+              matrix->vmult(internal, values);
+              energy += 0.5 * (values * internal);
+            }
+          else
+            {
+              fe_values.reinit(cell);
+              energy += cell_internal_force(material,
+                                            fe_values,
+                                            displacement,
+                                            internal);
+            }
+          if (loads.loaded(cell))
+            loads.cell_load(cell, fe_values, fe_face_values, cell_load);
+          else
+            cell_load = 0.;
           for (unsigned int i = 0; i < n; ++i)
             {
               const unsigned int d = fe.system_to_component_index(i).first;

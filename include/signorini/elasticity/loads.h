@@ -32,6 +32,12 @@ namespace signorini
     void
     assemble(dealii::TrilinosWrappers::MPI::Vector &load);
 
+    /** Whether @p cell carries a load: a body force (unless it vanishes),
+     * or a face with the traction. Elsewhere cell_load() is zero. */
+    bool
+    loaded(
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell) const;
+
     /** The load vector of one cell, body force and traction [N], with the
      * traction of the last assemble(). */
     void
