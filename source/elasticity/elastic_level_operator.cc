@@ -60,9 +60,11 @@ namespace signorini
   {
     matrix_free.clear();
     cell_matrices.clear();
-    matrix_of_cell = {};
-    cell_dofs      = {};
-    direct         = {};
+    matrix_of_cell   = {};
+    cell_dofs        = {};
+    resolved_dofs    = {};
+    by_vertex_blocks = false;
+    direct           = {};
     line_offsets.clear();
     line_entries.clear();
     line_dof.clear();
@@ -177,7 +179,20 @@ namespace signorini
     constexpr unsigned int      n = Evaluation::static_dofs_per_cell;
     CellNumber                  x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
-      if (direct[cell])
+      if (direct[cell] && by_vertex_blocks)
+        {
+          // A vertex's dim dofs are consecutive: one index per vertex.
+          constexpr unsigned int n_vertex = n / dim;
+          const unsigned int    *base     = &cell_dofs[cell * n_vertex];
+          for (unsigned int v = 0; v < n_vertex; ++v)
+            for (unsigned int a = 0; a < dim; ++a)
+              x[a * n_vertex + v] = src.local_element(base[v] + a);
+          cell_matrices.apply(matrix_of_cell[cell], x, y);
+          for (unsigned int v = 0; v < n_vertex; ++v)
+            for (unsigned int a = 0; a < dim; ++a)
+              dst.local_element(base[v] + a) += y[a * n_vertex + v];
+        }
+      else if (direct[cell])
         {
           const unsigned int *dofs = &cell_dofs[cell * n];
           for (unsigned int i = 0; i < n; ++i)
@@ -191,7 +206,10 @@ namespace signorini
           // x = C src (src itself if @p as_given), y = K x, dst += C^T y,
           // C the constraints: a constrained dof is read from, and writes
           // to, its line's dofs.
-          const unsigned int *dofs = &cell_dofs[cell * n];
+          const unsigned int *dofs =
+            by_vertex_blocks ?
+              &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n] :
+              &cell_dofs[cell * n];
           for (unsigned int i = 0; i < n; ++i)
             if (dofs[i] & constrained_flag)
               {
@@ -449,6 +467,49 @@ namespace signorini
     diagonal_without_contact.compress(VectorOperation::add);
     for (const unsigned int i : constrained)
       diagonal_without_contact.local_element(i) = 1.;
+    compact_cell_dofs();
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::compact_cell_dofs()
+  {
+    constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
+    constexpr unsigned int n_vertex = n / dim;
+    const unsigned int     n_cells  = direct.size();
+    by_vertex_blocks                = true;
+    for (unsigned int cell = 0; cell < n_cells && by_vertex_blocks; ++cell)
+      if (direct[cell])
+        for (unsigned int a = 1; a < dim; ++a)
+          for (unsigned int v = 0; v < n_vertex; ++v)
+            by_vertex_blocks =
+              by_vertex_blocks && cell_dofs[cell * n + a * n_vertex + v] ==
+                                    cell_dofs[cell * n + v] + a;
+    if (!by_vertex_blocks)
+      return;
+    // The other cells' n entries (of those with a shape matrix: the others
+    // go through FEEvaluation), in order, in resolved_dofs; their first
+    // entry in cell_dofs says where (in units of n).
+    const auto resolved_cell = [&](const unsigned int cell) {
+      return !direct[cell] && matrix_of_cell[cell] != CellMatrices::none;
+    };
+    resolved_dofs.clear();
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
+      if (resolved_cell(cell))
+        resolved_dofs.insert(resolved_dofs.end(),
+                             cell_dofs.begin() + cell * n,
+                             cell_dofs.begin() + (cell + 1) * n);
+    // In place: entry cell * n_vertex is written after cell * n was read.
+    unsigned int resolved = 0;
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
+      if (direct[cell])
+        for (unsigned int v = 0; v < n_vertex; ++v)
+          cell_dofs[cell * n_vertex + v] = cell_dofs[cell * n + v];
+      else if (resolved_cell(cell))
+        cell_dofs[cell * n_vertex] = resolved++;
+    cell_dofs.resize(n_cells * n_vertex);
+    cell_dofs.shrink_to_fit();
+    resolved_dofs.shrink_to_fit();
   }
 
   template <int dim>

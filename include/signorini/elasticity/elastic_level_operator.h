@@ -212,6 +212,12 @@ namespace signorini
     void
     compute_diagonal(const std::vector<CellIterator> &cells);
 
+    /** cell_dofs with one entry per vertex for the direct cells, where
+     * every direct cell's vertex has its dim dofs one after the other
+     * (deal.II numbers them so): a third of the indices to read in 3D. */
+    void
+    compact_cell_dofs();
+
     const Material                 &material;
     const double                    mu;
     const double                    lambda;
@@ -227,6 +233,12 @@ namespace signorini
      * else `resolved` (below). */
     std::vector<unsigned int> cell_dofs;
     std::vector<bool>         direct;
+    /** Whether cell_dofs was compacted (compact_cell_dofs()): a direct
+     * cell's entries are then its vertices' first dofs, n / dim of them
+     * (the other dim - 1 follow each), and another cell's first entry is
+     * the place of its n entries in resolved_dofs (in units of n). */
+    bool                      by_vertex_blocks = false;
+    std::vector<unsigned int> resolved_dofs;
     /** The cells with a shape matrix and constrained dofs (hanging nodes,
      * Dirichlet dofs; `resolved`: not direct, with a matrix) are applied as
      * C^T K C without FEEvaluation too: in cell_dofs, a constrained dof is
