@@ -65,38 +65,26 @@ namespace signorini
         y[i] = sum[i];
     }
 
-    SIGNORINI_WIDE_KERNEL void
-    apply_quadrilateral(const double *__restrict K,
-                        const double *__restrict x,
-                        double *__restrict y)
-    {
-      apply_columns<8>(K, x, y);
-    }
+// The kernels of a quadrilateral (n = 8) and a hexahedron (n = 24) in
+// Number: plain functions, which target_clones copies per instruction set.
+#define SIGNORINI_CELL_KERNELS(Number)                                       \
+  SIGNORINI_WIDE_KERNEL void apply_quadrilateral(const Number *__restrict K, \
+                                                 const Number *__restrict x, \
+                                                 Number *__restrict y)       \
+  {                                                                          \
+    apply_columns<8>(K, x, y);                                               \
+  }                                                                          \
+  SIGNORINI_WIDE_KERNEL void apply_hexahedron(const Number *__restrict K,    \
+                                              const Number *__restrict x,    \
+                                              Number *__restrict y)          \
+  {                                                                          \
+    apply_columns<24>(K, x, y);                                              \
+  }
 
-    SIGNORINI_WIDE_KERNEL void
-    apply_hexahedron(const double *__restrict K,
-                     const double *__restrict x,
-                     double *__restrict y)
-    {
-      apply_columns<24>(K, x, y);
-    }
-
+    SIGNORINI_CELL_KERNELS(double)
     // Single precision: twice the entries per register, half the bytes.
-    SIGNORINI_WIDE_KERNEL void
-    apply_quadrilateral(const float *__restrict K,
-                        const float *__restrict x,
-                        float *__restrict y)
-    {
-      apply_columns<8>(K, x, y);
-    }
-
-    SIGNORINI_WIDE_KERNEL void
-    apply_hexahedron(const float *__restrict K,
-                     const float *__restrict x,
-                     float *__restrict y)
-    {
-      apply_columns<24>(K, x, y);
-    }
+    SIGNORINI_CELL_KERNELS(float)
+#undef SIGNORINI_CELL_KERNELS
 
     template <typename Number>
     void
@@ -110,6 +98,22 @@ namespace signorini
       for (unsigned int j = 0; j < n; ++j)
         for (unsigned int i = 0; i < n; ++i)
           y[i] += K[j * n + i] * x[j];
+    }
+
+    /** y = K x by the kernel of its size. */
+    template <typename Number>
+    void
+    apply_matrix(const unsigned int n,
+                 const Number      *K,
+                 const Number      *x,
+                 Number            *y)
+    {
+      if (n == 24)
+        apply_hexahedron(K, x, y);
+      else if (n == 8)
+        apply_quadrilateral(K, x, y);
+      else
+        apply_any(n, K, x, y);
     }
 #undef SIGNORINI_WIDE_KERNEL
 #undef SIGNORINI_AVX2
@@ -169,24 +173,12 @@ namespace signorini
                       const double      *x,
                       double            *y) const
   {
-    const double *K = matrix(index);
-    if (n == 24)
-      apply_hexahedron(K, x, y);
-    else if (n == 8)
-      apply_quadrilateral(K, x, y);
-    else
-      apply_any(n, K, x, y);
+    apply_matrix(n, matrix(index), x, y);
   }
 
   void
   CellMatrices::apply(const unsigned int index, const float *x, float *y) const
   {
-    const float *K = single_entries.data() + std::size_t(index) * n * n;
-    if (n == 24)
-      apply_hexahedron(K, x, y);
-    else if (n == 8)
-      apply_quadrilateral(K, x, y);
-    else
-      apply_any(n, K, x, y);
+    apply_matrix(n, single_entries.data() + std::size_t(index) * n * n, x, y);
   }
 } // namespace signorini
