@@ -239,38 +239,50 @@ namespace signorini
   }
 
   template <int dim>
+  const FullMatrix<double> *
+  CellStiffness<dim>::shared(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    FEValues<dim>                                        &fe_values,
+    double                                               &factor)
+  {
+    double      scale;
+    const Shape shape = shape_of(cell, scale);
+    factor            = scales_linearly ? scale : 1.;
+
+    // Keep storing while the cache is small or repetitions are common.
+    ++lookups;
+    auto found = cache.find(shape);
+    if (found != cache.end())
+      return &found->second;
+    if (cache.size() >= max_shapes || cache.size() * 2 > lookups + 64)
+      return nullptr;
+    // Stored for the unit scale: K(s x) = s^(dim-2) K(x) (s K(x) in an
+    // axisymmetric model).
+    fe_values.reinit(cell);
+    found = cache.emplace(shape, FullMatrix<double>()).first;
+    compute(fe_values, found->second);
+    if (scales_linearly)
+      found->second *= 1. / scale;
+    return &found->second;
+  }
+
+  template <int dim>
   const FullMatrix<double> &
   CellStiffness<dim>::matrix(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     FEValues<dim>                                        &fe_values)
   {
-    double      scale;
-    const Shape shape = shape_of(cell, scale);
-
-    // Keep storing while the cache is small or repetitions are common.
-    ++lookups;
-    const bool store =
-      cache.size() < max_shapes && cache.size() * 2 <= lookups + 64;
-    auto found = cache.find(shape);
-    if (found == cache.end())
+    double factor;
+    if (const auto *unit = shared(cell, fe_values, factor))
       {
-        fe_values.reinit(cell);
-        if (!store)
-          {
-            compute(fe_values, scaled);
-            return scaled;
-          }
-        // Stored for the unit scale: K(s x) = s^(dim-2) K(x) (s K(x) in an
-        // axisymmetric model).
-        found = cache.emplace(shape, FullMatrix<double>()).first;
-        compute(fe_values, found->second);
-        if (scales_linearly)
-          found->second *= 1. / scale;
+        if (!scales_linearly)
+          return *unit;
+        scaled = *unit;
+        scaled *= factor;
+        return scaled;
       }
-    if (!scales_linearly)
-      return found->second;
-    scaled = found->second;
-    scaled *= scale;
+    fe_values.reinit(cell);
+    compute(fe_values, scaled);
     return scaled;
   }
 

@@ -60,11 +60,10 @@ namespace signorini
   {
     matrix_free.clear();
     cell_matrices.clear();
-    matrix_of_cell   = {};
-    cell_dofs        = {};
-    resolved_dofs    = {};
-    by_vertex_blocks = false;
-    direct           = {};
+    matrix_of_cell = {};
+    cell_dofs      = {};
+    resolved_dofs  = {};
+    direct         = {};
     line_offsets.clear();
     line_entries.clear();
     line_dof.clear();
@@ -179,7 +178,7 @@ namespace signorini
     constexpr unsigned int      n = Evaluation::static_dofs_per_cell;
     CellNumber                  x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
-      if (direct[cell] && by_vertex_blocks)
+      if (direct[cell])
         {
           // A vertex's dim dofs are consecutive: one index per vertex.
           constexpr unsigned int n_vertex = n / dim;
@@ -192,24 +191,13 @@ namespace signorini
             for (unsigned int a = 0; a < dim; ++a)
               dst.local_element(base[v] + a) += y[a * n_vertex + v];
         }
-      else if (direct[cell])
-        {
-          const unsigned int *dofs = &cell_dofs[cell * n];
-          for (unsigned int i = 0; i < n; ++i)
-            x[i] = src.local_element(dofs[i]);
-          cell_matrices.apply(matrix_of_cell[cell], x, y);
-          for (unsigned int i = 0; i < n; ++i)
-            dst.local_element(dofs[i]) += y[i];
-        }
       else if (matrix_of_cell[cell] != CellMatrices::none)
         {
           // x = C src (src itself if @p as_given), y = K x, dst += C^T y,
           // C the constraints: a constrained dof is read from, and writes
           // to, its line's dofs.
           const unsigned int *dofs =
-            by_vertex_blocks ?
-              &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n] :
-              &cell_dofs[cell * n];
+            &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
           for (unsigned int i = 0; i < n; ++i)
             if (dofs[i] & constrained_flag)
               {
@@ -477,19 +465,9 @@ namespace signorini
     constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
     constexpr unsigned int n_vertex = n / dim;
     const unsigned int     n_cells  = direct.size();
-    by_vertex_blocks                = true;
-    for (unsigned int cell = 0; cell < n_cells && by_vertex_blocks; ++cell)
-      if (direct[cell])
-        for (unsigned int a = 1; a < dim; ++a)
-          for (unsigned int v = 0; v < n_vertex; ++v)
-            by_vertex_blocks =
-              by_vertex_blocks && cell_dofs[cell * n + a * n_vertex + v] ==
-                                    cell_dofs[cell * n + v] + a;
-    if (!by_vertex_blocks)
-      return;
-    // The other cells' n entries (of those with a shape matrix: the others
-    // go through FEEvaluation), in order, in resolved_dofs; their first
-    // entry in cell_dofs says where (in units of n).
+    // The resolved cells' n entries (not those of the cells without a
+    // shape matrix: they go through FEEvaluation), in order, in
+    // resolved_dofs; their first entry in cell_dofs says where.
     const auto resolved_cell = [&](const unsigned int cell) {
       return !direct[cell] && matrix_of_cell[cell] != CellMatrices::none;
     };
@@ -504,7 +482,13 @@ namespace signorini
     for (unsigned int cell = 0; cell < n_cells; ++cell)
       if (direct[cell])
         for (unsigned int v = 0; v < n_vertex; ++v)
-          cell_dofs[cell * n_vertex + v] = cell_dofs[cell * n + v];
+          {
+            const unsigned int first = cell_dofs[cell * n + v];
+            for (unsigned int a = 1; a < dim; ++a)
+              AssertThrow(cell_dofs[cell * n + a * n_vertex + v] == first + a,
+                          ExcMessage("a vertex's dofs are not consecutive"));
+            cell_dofs[cell * n_vertex + v] = first;
+          }
       else if (resolved_cell(cell))
         cell_dofs[cell * n_vertex] = resolved++;
     cell_dofs.resize(n_cells * n_vertex);

@@ -48,6 +48,17 @@ namespace signorini
     matrix(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
            dealii::FEValues<dim> &fe_values);
 
+    /** The stiffness matrix of @p cell over @p factor (K = factor times
+     * it) if its shape is cached, or computed and cached now (@p fe_values
+     * reinit'ed on @p cell); null, with @p fe_values untouched, once the
+     * cache stores no more shapes (curved meshes, whose cells rarely
+     * repeat: the caller may evaluate the cell more cheaply than its
+     * whole matrix). Valid until the cache is cleared. */
+    const dealii::FullMatrix<double> *
+    shared(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+           dealii::FEValues<dim> &fe_values,
+           double                &factor);
+
     /** The stiffness matrix of @p cell if its shape is cached, else null
      * (the caller may then need less than the whole matrix). Valid until
      * the next call. */

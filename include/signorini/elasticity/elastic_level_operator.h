@@ -212,9 +212,9 @@ namespace signorini
     void
     compute_diagonal(const std::vector<CellIterator> &cells);
 
-    /** cell_dofs with one entry per vertex for the direct cells, where
-     * every direct cell's vertex has its dim dofs one after the other
-     * (deal.II numbers them so): a third of the indices to read in 3D. */
+    /** cell_dofs with one entry per vertex for the direct cells, whose
+     * vertices have their dim dofs one after the other (deal.II numbers
+     * them so; checked): a third of the indices to read in 3D. */
     void
     compact_cell_dofs();
 
@@ -233,15 +233,15 @@ namespace signorini
      * else `resolved` (below). */
     std::vector<unsigned int> cell_dofs;
     std::vector<bool>         direct;
-    /** Whether cell_dofs was compacted (compact_cell_dofs()): a direct
-     * cell's entries are then its vertices' first dofs, n / dim of them
-     * (the other dim - 1 follow each), and another cell's first entry is
-     * the place of its n entries in resolved_dofs (in units of n). */
-    bool                      by_vertex_blocks = false;
+    /** Once compact_cell_dofs() ran (at setup), cell_dofs holds n / dim
+     * entries per cell: a direct cell's vertices' first dofs (the other
+     * dim - 1 follow each), and in the first, a resolved cell's place in
+     * resolved_dofs (in units of n), where its n entries are. */
     std::vector<unsigned int> resolved_dofs;
     /** The cells with a shape matrix and constrained dofs (hanging nodes,
      * Dirichlet dofs; `resolved`: not direct, with a matrix) are applied as
-     * C^T K C without FEEvaluation too: in cell_dofs, a constrained dof is
+     * C^T K C without FEEvaluation too: in their entries (cell_dofs, then
+     * resolved_dofs), a constrained dof is
      * constrained_flag | the index of its line, whose (local index, weight)
      * pairs are line_entries from line_offsets[line] to
      * line_offsets[line + 1] (none for a Dirichlet dof). */
