@@ -115,9 +115,11 @@ namespace signorini
     DoFTools::make_hanging_node_constraints(dofs, hanging_nodes);
     hanging_nodes.close();
 
+    // The hanging nodes' lines, already closed (merged faster than made
+    // anew), then the Dirichlet lines of the dofs they leave free.
     fixed_constraints.clear();
     fixed_constraints.reinit(relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dofs, fixed_constraints);
+    fixed_constraints.merge(hanging_nodes);
     for (const auto &[id, mask] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
         *linear_mapping,
