@@ -39,6 +39,36 @@ namespace signorini
   } // namespace
 
   template <int dim>
+  std::array<Tensor<1, dim>, dim - 1>
+  tangent_frame(const Tensor<1, dim> &n)
+  {
+    std::array<Tensor<1, dim>, dim - 1> t;
+    if constexpr (dim == 2)
+      {
+        t[0][0] = -n[1];
+        t[0][1] = n[0];
+      }
+    else
+      {
+        // Along the axis e_k where n is smallest, less its part along n.
+        unsigned int k = 0;
+        for (unsigned int d = 1; d < dim; ++d)
+          if (std::abs(n[d]) < std::abs(n[k]))
+            k = d;
+        t[0] = -n[k] * n;
+        t[0][k] += 1.;
+        t[0] /= t[0].norm();
+        t[1] = cross_product_3d(n, t[0]);
+      }
+    return t;
+  }
+
+  template std::array<Tensor<1, 2>, 1>
+  tangent_frame(const Tensor<1, 2> &);
+  template std::array<Tensor<1, 3>, 2>
+  tangent_frame(const Tensor<1, 3> &);
+
+  template <int dim>
   ContactSurface<dim>::ContactSurface(
     const std::set<types::boundary_id> &contact_ids,
     const ObstacleSet<dim>             &obstacles,
@@ -208,6 +238,7 @@ namespace signorini
             node.scalar_dof = vertex.dofs[along];
             node.position   = vertex.position;
             node.normal     = n;
+            node.tangents   = tangent_frame(n);
             node.gap        = vertex.gaps[k];
             node.obstacle   = k;
             node.owned      = owned_dofs.is_element(node.scalar_dof);
@@ -360,12 +391,17 @@ namespace signorini
     unsigned int  count = 0;
     std::uint64_t hash  = 0;
     for (const auto &node : contact_nodes)
-      if (node.owned && node.active)
+      if (node.owned && node.in_contact())
         {
           ++count;
-          std::uint64_t z = node.scalar_dof + 0x9e3779b97f4a7c15ULL;
-          z               = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-          z               = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+          // The state beyond `closed` enters the hash (friction's).
+          const std::uint64_t state =
+            static_cast<std::uint64_t>(node.state) -
+            static_cast<std::uint64_t>(NodeState::closed);
+          std::uint64_t z =
+            node.scalar_dof + 0x9e3779b97f4a7c15ULL + (state << 40);
+          z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+          z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
           hash += z ^ (z >> 31);
         }
     // Sums of per-process hashes: the same on every process.

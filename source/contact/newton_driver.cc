@@ -19,7 +19,8 @@ namespace signorini
   NewtonDriver<dim>::NewtonDriver(const Discretisation<dim> &discretisation,
                                   ElasticOperator<dim>      &elastic_operator,
                                   ContactSurface<dim>       &surface,
-                                  ContactStrategy<dim>      &strategy,
+                                  const ContactLaw<dim>     &law,
+                                  ContactFormulation<dim>   &formulation,
                                   const ContactParameters   &parameters,
                                   const bool                 verbose,
                                   VectorType                &solution,
@@ -29,7 +30,8 @@ namespace signorini
     : discretisation(discretisation)
     , elastic_operator(elastic_operator)
     , surface(surface)
-    , strategy(strategy)
+    , law(law)
+    , formulation(formulation)
     , parameters(parameters)
     , verbose(verbose)
     , solution(solution)
@@ -59,18 +61,21 @@ namespace signorini
   NewtonDriver<dim>::initialize_active_set()
   {
     // From the previous cycle's displacement and pressure (zero on cycle 0),
-    // with the touching and penetrating nodes active from the start, so that
-    // a body held only by the obstacle is supported in the first solve.
+    // with the touching and penetrating nodes in contact from the start, so
+    // that a body held only by the obstacle is supported in the first
+    // solve.
     auto &nodes = surface.nodes();
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         const double gap = surface.deformed_gap(nodes[i], solution);
-        nodes[i].active =
-          gap <= surface.touching_tolerance() ||
-          strategy.update_rule(i,
-                               nodes[i],
-                               gap,
-                               contact_pressure(nodes[i].scalar_dof));
+        const auto   state =
+          law.state(nodes[i],
+                    formulation.state_pressure(
+                      i, nodes[i], gap, contact_pressure(nodes[i].scalar_dof)));
+        nodes[i].state =
+          state == NodeState::open && gap <= surface.touching_tolerance() ?
+            NodeState::closed :
+            state;
       }
   }
 
@@ -83,14 +88,15 @@ namespace signorini
     auto              &nodes   = surface.nodes();
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        const bool active =
-          strategy.update_rule(i,
-                               nodes[i],
-                               surface.deformed_gap(nodes[i], solution),
-                               contact_pressure(nodes[i].scalar_dof));
-        if (nodes[i].owned && active != nodes[i].active)
+        const auto state = law.state(
+          nodes[i],
+          formulation.state_pressure(i,
+                                     nodes[i],
+                                     surface.deformed_gap(nodes[i], solution),
+                                     contact_pressure(nodes[i].scalar_dof)));
+        if (nodes[i].owned && state != nodes[i].state)
           ++changes;
-        nodes[i].active = active;
+        nodes[i].state = state;
       }
     return Utilities::MPI::sum(changes, discretisation.mpi_communicator());
   }
@@ -120,8 +126,10 @@ namespace signorini
     for (auto &node : surface.nodes())
       {
         const double u = node.normal_displacement(solution);
-        node.active    = u < 0 && node.gap / -u <= theta_min * (1. + 1e-6);
-        changes += node.owned && node.active ? 1 : 0;
+        node.state     = u < 0 && node.gap / -u <= theta_min * (1. + 1e-6) ?
+                           NodeState::closed :
+                           NodeState::open;
+        changes += node.owned && node.in_contact() ? 1 : 0;
       }
     return Utilities::MPI::sum(changes, comm);
   }
@@ -136,8 +144,9 @@ namespace signorini
     // The residual K u - f at a contact node, on its free components, is
     // the obstacle's nodal force lambda_i n_i (at a corner, the sum of its
     // nodes' forces); the pressure is lambda_i / m_i. The nonlinear residual
-    // combines the force balance at all other free dofs with the strategy's
-    // complementarity function at the contact nodes.
+    // combines the force balance at all other free dofs with the
+    // complementarity function at the contact nodes (the law's, of the
+    // formulation's augmented pressure).
     const MPI_Comm comm = discretisation.mpi_communicator();
     VectorType     owned_pressure(discretisation.locally_owned_dofs(), comm);
     VectorType     balance(contact_residual);
@@ -149,8 +158,10 @@ namespace signorini
         {
           const auto  &node     = nodes[i];
           const double p        = node.mass > 0 ? lambda[i] / node.mass : 0.;
-          const double expected = strategy.complementarity_force(
-            i, node, lambda[i], p, surface.deformed_gap(node, solution));
+          const double expected = law.complementarity_force(
+            node,
+            formulation.residual_pressure(
+              i, node, surface.deformed_gap(node, solution), p));
           owned_pressure(node.scalar_dof) = p;
           // The force balance along the obstacle's surface remains.
           for (unsigned int d = 0; d < dim; ++d)
@@ -177,8 +188,8 @@ namespace signorini
   void
   NewtonDriver<dim>::assemble_newton_system()
   {
-    linearisation = ContactLinearisation<dim>();
-    strategy.linearise(surface, linearisation);
+    additions = SystemAdditions<dim>();
+    formulation.linearise(surface, law, additions);
   }
 
   template <int dim>
@@ -187,14 +198,14 @@ namespace signorini
   {
     try
       {
-        elastic_operator.solve(linearisation, solution, final_step);
+        elastic_operator.solve(additions, solution, final_step);
       }
     catch (const SolverFailure &failure)
       {
         throw SolverFailure(failure.status,
                             std::string(failure.what()) +
                               " (is the body held against rigid motion?" +
-                              strategy.failure_hint() + ")");
+                              formulation.failure_hint() + ")");
       }
   }
 
@@ -264,10 +275,10 @@ namespace signorini
               return;
             throw SolverFailure(
               exit_status::contact_stalled,
-              "contact solver (" + strategy.name() + ") stalled on cycle " +
+              "contact solver (" + formulation.name() + ") stalled on cycle " +
                 std::to_string(cycle) + " at residual " +
                 number(residual_norm) + " with an unchanged active set (" +
-                strategy.stall_hint() +
+                formulation.stall_hint() +
                 "is the body held against rigid motion? is Linear "
                 "solver/Tolerance too loose?)");
           }
@@ -278,7 +289,7 @@ namespace signorini
           std::find(visited.begin(), visited.end(), signature) != visited.end();
         if (returned && parameters.remedies)
           {
-            const std::string remedy = strategy.break_cycle();
+            const std::string remedy = formulation.break_cycle();
             if (!remedy.empty())
               {
                 pcout << "   remedy: the active set returned to an earlier "
@@ -293,8 +304,8 @@ namespace signorini
         if (returned)
           throw SolverFailure(
             exit_status::active_set_cycling,
-            "contact solver (" + strategy.name() +
-              (strategy.cycle_broken() ? ", cycle breaking applied" : "") +
+            "contact solver (" + formulation.name() +
+              (formulation.cycle_broken() ? ", cycle breaking applied" : "") +
               ") is cycling on cycle " + std::to_string(cycle) +
               ": iteration " + std::to_string(iteration) +
               " returned to an earlier active set of " +
@@ -302,7 +313,7 @@ namespace signorini
         visited.push_back(signature);
       }
     throw SolverFailure(exit_status::contact_no_converge,
-                        "contact solver (" + strategy.name() +
+                        "contact solver (" + formulation.name() +
                           ") did not converge in " +
                           std::to_string(parameters.max_iterations) +
                           " iterations on cycle " + std::to_string(cycle) +

@@ -117,26 +117,26 @@ namespace signorini
   template <int dim>
   void
   AssembledOperator<dim>::assemble_newton_system(
-    const ContactLinearisation<dim> &linearisation)
+    const SystemAdditions<dim> &additions)
   {
     TimerOutput::Scope t(timer, "Assembly: Newton system");
-    const auto        &key = linearisation.key;
+    const auto        &key = additions.key;
     if (!matrix_assembled || key != assembled_for)
       {
         linear_system_solver.matrix_changed(matrix_assembled &&
-                                            linearisation.local_changes &&
+                                            additions.local_changes &&
                                             key.second == assembled_for.second);
-        // Held nodes sit on the obstacle: n.u = -gap.
+        // The additions' constraint lines win over the discretisation's.
         constraints.clear();
         constraints.reinit(discretisation.locally_relevant_dofs());
-        linearisation.add_held_constraints(constraints);
-        held_dofs.clear();
-        for (const auto &line : constraints.get_lines())
-          held_dofs.push_back(line.index);
+        additions.add_constraints(constraints);
+        added_dofs.clear();
+        for (const auto &line : additions.constraints)
+          added_dofs.push_back(line.dof);
         constraints.merge(discretisation.constraints(),
                           AffineConstraints<double>::left_object_wins);
         constraints.close();
-        assemble_matrix(linearisation);
+        assemble_matrix(additions);
         base_rhs         = system_rhs;
         assembled_for    = key;
         matrix_assembled = true;
@@ -144,21 +144,18 @@ namespace signorini
     else
       system_rhs = base_rhs;
 
-    if (linearisation.extra_forces)
+    if (additions.has_forces)
       {
-        for (const auto &spring : linearisation.springs)
-          for (unsigned int d = 0; d < dim; ++d)
-            if (spring.node->normal[d] != 0. && spring.node->free[d])
-              system_rhs(spring.node->dofs[d]) +=
-                spring.extra_force * spring.node->normal[d];
+        for (const auto &force : additions.forces)
+          if (!constraints.is_constrained(force.dof))
+            system_rhs(force.dof) += force.value;
         system_rhs.compress(VectorOperation::add);
       }
   }
 
   template <int dim>
   void
-  AssembledOperator<dim>::assemble_matrix(
-    const ContactLinearisation<dim> &linearisation)
+  AssembledOperator<dim>::assemble_matrix(const SystemAdditions<dim> &additions)
   {
     system_matrix         = 0;
     system_rhs            = 0;
@@ -185,10 +182,10 @@ namespace signorini
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     system_rhs += load_vector;
-    // The load at a dof that a held node's constraint solves for goes to
+    // The load at a dof that an added constraint line solves for goes to
     // the dofs it depends on (as distribute_local_to_global puts a cell's
     // load): along the obstacle's surface it moves the node.
-    for (const auto dof : held_dofs)
+    for (const auto dof : added_dofs)
       if (discretisation.locally_owned_dofs().is_element(dof))
         if (const auto *entries = constraints.get_constraint_entries(dof))
           if (!entries->empty())
@@ -199,33 +196,33 @@ namespace signorini
             }
     system_rhs.compress(VectorOperation::add);
 
-    if (linearisation.penalised)
+    if (additions.has_blocks)
       {
-        // On the node's free components; a component fixed by a support
+        // On the rows that are not constrained; a column at a fixed dof
         // moves its share to the right-hand side.
-        for (const auto &spring : linearisation.springs)
-          {
-            const auto &node = *spring.node;
-            for (unsigned int a = 0; a < dim; ++a)
-              if (node.normal[a] != 0. && node.free[a])
-                {
-                  for (unsigned int b = 0; b < dim; ++b)
-                    if (node.normal[b] != 0.)
-                      {
-                        if (node.free[b])
-                          system_matrix.add(node.dofs[a],
-                                            node.dofs[b],
-                                            spring.stiffness * node.normal[a] *
-                                              node.normal[b]);
-                        else
-                          system_rhs(node.dofs[a]) -=
-                            spring.stiffness * node.normal[a] * node.normal[b] *
-                            constraints.get_inhomogeneity(node.dofs[b]);
-                      }
-                  system_rhs(node.dofs[a]) -=
-                    spring.rest_force * node.normal[a];
-                }
-          }
+        for (const auto &block : additions.blocks)
+          for (unsigned int a = 0; a < dim; ++a)
+            if (!constraints.is_constrained(block.rows[a]))
+              {
+                for (unsigned int b = 0; b < dim; ++b)
+                  if (const double value = block.matrix[a][b]; value != 0.)
+                    {
+                      const auto column = block.columns[b];
+                      if (!constraints.is_constrained(column))
+                        system_matrix.add(block.rows[a], column, value);
+                      else
+                        {
+                          Assert(
+                            constraints.get_constraint_entries(column)->empty(),
+                            ExcMessage("A block meets a constrained "
+                                       "dof with masters."));
+                          system_rhs(block.rows[a]) -=
+                            value * constraints.get_inhomogeneity(column);
+                        }
+                    }
+                if (block.rhs[a] != 0.)
+                  system_rhs(block.rows[a]) += block.rhs[a];
+              }
         system_matrix.compress(VectorOperation::add);
         system_rhs.compress(VectorOperation::add);
       }
@@ -233,11 +230,11 @@ namespace signorini
 
   template <int dim>
   void
-  AssembledOperator<dim>::solve(const ContactLinearisation<dim> &linearisation,
-                                VectorType                      &u,
-                                const bool                       final_step)
+  AssembledOperator<dim>::solve(const SystemAdditions<dim> &additions,
+                                VectorType                 &u,
+                                const bool                  final_step)
   {
-    assemble_newton_system(linearisation);
+    assemble_newton_system(additions);
     VectorType distributed(discretisation.locally_owned_dofs(),
                            discretisation.mpi_communicator());
     distributed = u; // a warm start for the iterative solver
@@ -247,7 +244,8 @@ namespace signorini
                                system_rhs,
                                discretisation.fe().n_components(),
                                final_step ? parameters.tolerance :
-                                            parameters.newton_tolerance);
+                                            parameters.newton_tolerance,
+                               additions.symmetric);
     constraints.distribute(distributed);
     u = distributed;
   }

@@ -102,11 +102,11 @@ namespace signorini
 
   template <int dim>
   void
-  AutomaticOperator<dim>::solve(const ContactLinearisation<dim> &linearisation,
-                                VectorType                      &u,
-                                const bool                       final_step)
+  AutomaticOperator<dim>::solve(const SystemAdditions<dim> &additions,
+                                VectorType                 &u,
+                                const bool                  final_step)
   {
-    chosen->solve(linearisation, u, final_step);
+    chosen->solve(additions, u, final_step);
   }
 
   template <int dim>

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <signorini/base/failures.h>
 #include <signorini/base/memory.h>
@@ -212,12 +213,14 @@ namespace signorini
   }
 
   unsigned int
-  LinearSystemSolver::solve_cg(const TrilinosWrappers::SparseMatrix &matrix,
-                               TrilinosWrappers::MPI::Vector        &solution,
-                               const TrilinosWrappers::MPI::Vector  &rhs,
-                               const double relative_tolerance)
+  LinearSystemSolver::solve_iterative(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    TrilinosWrappers::MPI::Vector        &solution,
+    const TrilinosWrappers::MPI::Vector  &rhs,
+    const double                          relative_tolerance,
+    const bool                            symmetric)
   {
-    TimerOutput::Scope t(timer, "Solve: CG");
+    TimerOutput::Scope t(timer, symmetric ? "Solve: CG" : "Solve: GMRES");
     double             tolerance = relative_tolerance * rhs.l2_norm();
     if (relative_tolerance > parameters.tolerance)
       {
@@ -236,13 +239,24 @@ namespace signorini
     SolverControl control(parameters.max_iterations, tolerance);
     try
       {
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.solve(matrix, solution, rhs, *amg);
+        if (symmetric)
+          {
+            SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+            cg.solve(matrix, solution, rhs, *amg);
+          }
+        else
+          {
+            SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control, gmres_data<TrilinosWrappers::MPI::Vector>());
+            gmres.solve(matrix, solution, rhs, *amg);
+          }
       }
     catch (const SolverControl::NoConvergence &failure)
       {
         throw SolverFailure(exit_status::linear_solver,
-                            "linear solver (CG with AMG) did not converge in " +
+                            std::string("linear solver (") +
+                              (symmetric ? "CG" : "GMRES") +
+                              " with AMG) did not converge in " +
                               std::to_string(failure.last_step) +
                               " iterations (residual " +
                               std::to_string(failure.last_residual) + ")");
@@ -266,7 +280,8 @@ namespace signorini
                             TrilinosWrappers::MPI::Vector        &solution,
                             const TrilinosWrappers::MPI::Vector  &rhs,
                             const unsigned int                    components,
-                            const double relative_tolerance)
+                            const double relative_tolerance,
+                            const bool   symmetric)
   {
     if (parameters.resolved_type(
           components,
@@ -281,7 +296,8 @@ namespace signorini
       {
         if (!amg)
           build_amg(matrix, components);
-        return solve_cg(matrix, solution, rhs, relative_tolerance);
+        return solve_iterative(
+          matrix, solution, rhs, relative_tolerance, symmetric);
       }
     catch (const SolverFailure &failure)
       {
@@ -297,7 +313,8 @@ namespace signorini
             try
               {
                 build_amg(matrix, components);
-                return solve_cg(matrix, solution, rhs, relative_tolerance);
+                return solve_iterative(
+                  matrix, solution, rhs, relative_tolerance, symmetric);
               }
             catch (const SolverFailure &)
               {

@@ -1,5 +1,6 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <signorini/base/failures.h>
 #include <signorini/base/memory.h>
@@ -172,18 +173,14 @@ namespace signorini
 
   template <int dim>
   void
-  MatrixFreeOperator<dim>::setup_contact(
-    const ContactLinearisation<dim> &linearisation)
+  MatrixFreeOperator<dim>::setup_contact(const SystemAdditions<dim> &additions)
   {
     TimerOutput::Scope t(timer, "Solve: multigrid contact");
-    // Held nodes sit on the obstacle: n.u = -gap; closed with the
-    // discretisation's constraints as AssembledOperator does.
+    // The additions' constraint lines, closed with the discretisation's
+    // constraints as AssembledOperator does.
     constraints.clear();
     constraints.reinit(discretisation.locally_relevant_dofs());
-    linearisation.add_held_constraints(constraints);
-    std::vector<types::global_dof_index> held_dofs;
-    for (const auto &line : constraints.get_lines())
-      held_dofs.push_back(line.index);
+    additions.add_constraints(constraints);
     constraints.merge(discretisation.constraints(),
                       AffineConstraints<double>::left_object_wins);
     constraints.close();
@@ -191,109 +188,116 @@ namespace signorini
 
     const auto &owned = discretisation.locally_owned_dofs();
     std::vector<typename ElasticLevelOperator<dim>::HeldLine> held;
-    for (const auto dof : held_dofs)
-      if (owned.is_element(dof))
+    for (const auto &added : additions.constraints)
+      if (owned.is_element(added.dof))
         {
           typename ElasticLevelOperator<dim>::HeldLine line;
-          line.dof = dof;
-          if (const auto *entries = constraints.get_constraint_entries(dof))
+          line.dof = added.dof;
+          if (const auto *entries =
+                constraints.get_constraint_entries(added.dof))
             line.entries = *entries;
           held.push_back(line);
         }
 
-    // The springs k n n^T at their nodes (owned ones); on the coarser
-    // levels also the held nodes, as springs as stiff as the fine
-    // operator's diagonal there.
+    // The blocks at their vertices (owned ones); on the coarser levels
+    // their symmetric parts, and the constraint springs as stiff as the
+    // fine operator's diagonal there.
     std::vector<typename ElasticLevelOperator<dim>::NodalBlock> blocks;
     LAVector diagonal, off_diagonal;
     fine->initialize_dof_vector(diagonal);
     fine->initialize_dof_vector(off_diagonal);
-    const auto add_stiffness = [&](const ContactNode<dim> &node,
-                                   const double            k) {
-      for (unsigned int a = 0; a < dim; ++a)
-        diagonal(node.dofs[a]) += k * node.normal[a] * node.normal[a];
-      off_diagonal(node.dofs[0]) += k * node.normal[0] * node.normal[1];
-      if (dim == 3)
+    const auto add_stiffness =
+      [&](const std::array<types::global_dof_index, dim> &dofs,
+          const auto                                     &entry) {
+        for (unsigned int a = 0; a < dim; ++a)
+          diagonal(dofs[a]) += entry(a, a);
+        off_diagonal(dofs[0]) += entry(0, 1);
+        if (dim == 3)
+          {
+            off_diagonal(dofs[1]) += entry(1, dim - 1);
+            off_diagonal(dofs[dim - 1]) += entry(0, dim - 1);
+          }
+      };
+    if (additions.has_blocks)
+      for (const auto &block : additions.blocks)
         {
-          off_diagonal(node.dofs[1]) +=
-            k * node.normal[1] * node.normal[dim - 1];
-          off_diagonal(node.dofs[dim - 1]) +=
-            k * node.normal[0] * node.normal[dim - 1];
+          if (block.rows != block.columns)
+            throw SolverFailure(exit_status::linear_solver,
+                                "the matrix-free operator adds blocks at one "
+                                "vertex only, not between two: use Linear "
+                                "solver/Type = amg cg or direct");
+          typename ElasticLevelOperator<dim>::NodalBlock nodal;
+          nodal.dofs      = block.rows;
+          nodal.stiffness = block.matrix;
+          blocks.push_back(nodal);
+          add_stiffness(block.rows,
+                        [&](const unsigned int a, const unsigned int b) {
+                          return a == b || additions.symmetric ?
+                                   block.matrix[a][b] :
+                                   0.5 *
+                                     (block.matrix[a][b] + block.matrix[b][a]);
+                        });
         }
-    };
-    if (linearisation.penalised)
-      for (const auto &spring : linearisation.springs)
-        {
-          const auto                                    &node = *spring.node;
-          typename ElasticLevelOperator<dim>::NodalBlock block;
-          block.dofs = node.dofs;
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int b = 0; b < dim; ++b)
-              block.stiffness[a][b] =
-                spring.stiffness * node.normal[a] * node.normal[b];
-          blocks.push_back(block);
-          add_stiffness(node, spring.stiffness);
-        }
-    for (const auto *node : linearisation.held)
-      if (node->owned)
-        add_stiffness(*node, fine->diagonal()(node->scalar_dof));
+    for (const auto &spring : additions.constraint_springs)
+      {
+        const double k = fine->diagonal()(spring.scale_dof);
+        const auto  &d = spring.direction;
+        add_stiffness(spring.dofs,
+                      [&](const unsigned int a, const unsigned int b) {
+                        return k * d[a] * d[b];
+                      });
+      }
     fine->set_contact(held, blocks);
     multigrid.update(diagonal, off_diagonal);
-    contact_for   = linearisation.key;
+    contact_for   = additions.key;
     contact_ready = true;
   }
 
   template <int dim>
   void
   MatrixFreeOperator<dim>::newton_residual(
-    const ContactLinearisation<dim> &linearisation,
-    const LAVector                  &u,
-    LAVector                        &r) const
+    const SystemAdditions<dim> &additions,
+    const LAVector             &u,
+    LAVector                   &r) const
   {
     fine->internal_force(r, u);
     r -= load_la;
-    // The springs' force (k n.u + rest force - extra force) n on their
-    // nodes' free components.
-    if (linearisation.penalised)
-      for (const auto &spring : linearisation.springs)
-        {
-          const auto &node = *spring.node;
-          double      un   = 0.;
-          for (unsigned int b = 0; b < dim; ++b)
-            if (node.normal[b] != 0.)
-              un += node.normal[b] * u(node.dofs[b]);
-          double force = spring.stiffness * un + spring.rest_force;
-          if (linearisation.extra_forces)
-            force -= spring.extra_force;
-          for (unsigned int a = 0; a < dim; ++a)
-            if (node.normal[a] != 0. && node.free[a])
-              r(node.dofs[a]) += force * node.normal[a];
-        }
-    else if (linearisation.extra_forces)
-      for (const auto &spring : linearisation.springs)
+    // The blocks' force M u - rhs, and the forces, on the rows that are
+    // not constrained (condense() zeroes the others).
+    if (additions.has_blocks)
+      for (const auto &block : additions.blocks)
         for (unsigned int a = 0; a < dim; ++a)
-          if (spring.node->normal[a] != 0. && spring.node->free[a])
-            r(spring.node->dofs[a]) -=
-              spring.extra_force * spring.node->normal[a];
+          {
+            double force = -block.rhs[a];
+            for (unsigned int b = 0; b < dim; ++b)
+              if (block.matrix[a][b] != 0.)
+                force += block.matrix[a][b] * u(block.columns[b]);
+            if (force != 0.)
+              r(block.rows[a]) += force;
+          }
+    if (additions.has_forces)
+      for (const auto &force : additions.forces)
+        r(force.dof) -= force.value;
     fine->condense(r);
   }
 
   template <int dim>
   unsigned int
-  MatrixFreeOperator<dim>::solve_cg(
-    const ContactLinearisation<dim> &linearisation,
-    VectorType                      &u,
-    const bool                       final_step)
+  MatrixFreeOperator<dim>::solve_iterative(
+    const SystemAdditions<dim> &additions,
+    VectorType                 &u,
+    const bool                  final_step)
   {
     setup_levels();
-    if (!contact_ready || linearisation.key != contact_for)
-      setup_contact(linearisation);
+    if (!contact_ready || additions.key != contact_for)
+      setup_contact(additions);
     // The previous step's vectors and contact constraints are free by now;
     // returned to the system, they are not resident beside this step's
     // (they were 150 MB of the peak at 1.49M dofs on two processes).
     release_free_memory();
 
-    TimerOutput::Scope t(timer, "Solve: CG");
+    TimerOutput::Scope t(timer,
+                         additions.symmetric ? "Solve: CG" : "Solve: GMRES");
     // u0: the current displacement with the constraints applied; the
     // right-hand side's norm is that of the system for d = u - G(0).
     // (The lifting and its residual are freed before CG takes its memory.)
@@ -303,7 +307,7 @@ namespace signorini
       fine->initialize_dof_vector(lifting);
       fine->initialize_dof_vector(reference);
       local_constraints.distribute(lifting);
-      newton_residual(linearisation, lifting, reference);
+      newton_residual(additions, lifting, reference);
       rhs_norm = reference.l2_norm();
     }
     LAVector u0, rhs, d;
@@ -312,7 +316,7 @@ namespace signorini
     local_constraints.distribute(u0);
     fine->initialize_dof_vector(rhs);
     fine->initialize_dof_vector(d);
-    newton_residual(linearisation, u0, rhs);
+    newton_residual(additions, u0, rhs);
     rhs *= -1.;
 
     const double relative =
@@ -324,15 +328,25 @@ namespace signorini
     SolverControl control(parameters.max_iterations, tolerance);
     try
       {
-        SolverCG<LAVector>             cg(control);
         const MultigridOnFreeDofs<dim> preconditioner{multigrid, *fine};
-        cg.solve(*fine, d, rhs, preconditioner);
+        if (additions.symmetric)
+          {
+            SolverCG<LAVector> cg(control);
+            cg.solve(*fine, d, rhs, preconditioner);
+          }
+        else
+          {
+            SolverGMRES<LAVector> gmres(control, gmres_data<LAVector>());
+            gmres.solve(*fine, d, rhs, preconditioner);
+          }
       }
     catch (const SolverControl::NoConvergence &failure)
       {
         throw SolverFailure(exit_status::linear_solver,
-                            "linear solver (CG with geometric multigrid) did "
-                            "not converge in " +
+                            std::string("linear solver (") +
+                              (additions.symmetric ? "CG" : "GMRES") +
+                              " with geometric multigrid) did not converge "
+                              "in " +
                               std::to_string(failure.last_step) +
                               " iterations (residual " +
                               std::to_string(failure.last_residual) + ")");
@@ -348,19 +362,21 @@ namespace signorini
 
   template <int dim>
   void
-  MatrixFreeOperator<dim>::solve(const ContactLinearisation<dim> &linearisation,
-                                 VectorType                      &u,
-                                 const bool                       final_step)
+  MatrixFreeOperator<dim>::solve(const SystemAdditions<dim> &additions,
+                                 VectorType                 &u,
+                                 const bool                  final_step)
   {
     if (!fallback)
       try
         {
           const unsigned int iterations =
-            solve_cg(linearisation, u, final_step);
-          // CG's vectors, free now, before the Newton step's residual.
+            solve_iterative(additions, u, final_step);
+          // The solver's vectors, free now, before the Newton step's
+          // residual.
           release_free_memory();
           if (verbose)
-            pcout << "   multigrid CG: " << iterations << " iterations, "
+            pcout << "   multigrid " << (additions.symmetric ? "CG" : "GMRES")
+                  << ": " << iterations << " iterations, "
                   << multigrid.n_levels() << " levels" << std::endl;
           return;
         }
@@ -382,7 +398,7 @@ namespace signorini
           fallback->reinit();
           fallback->assemble_load();
         }
-    fallback->solve(linearisation, u, final_step);
+    fallback->solve(additions, u, final_step);
   }
 
   template <int dim>

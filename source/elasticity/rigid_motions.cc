@@ -156,10 +156,11 @@ namespace signorini
 
   template <int dim>
   void
-  check_rigid_motions_held(const Discretisation<dim>           &discretisation,
-                           const std::vector<ContactNode<dim>> &contact_nodes,
-                           const std::vector<RigidMode<dim>>   &modes,
-                           const bool contact_can_hold)
+  check_rigid_motions_held(
+    const Discretisation<dim>             &discretisation,
+    const std::vector<HeldDirection<dim>> &contact_directions,
+    const std::vector<RigidMode<dim>>     &modes,
+    const bool                             contact_can_hold)
   {
     const unsigned int n = modes.size();
     if (n == 0)
@@ -205,13 +206,12 @@ namespace signorini
         }
     // Contact holds a node along the obstacle's normal.
     if (contact_can_hold)
-      for (const auto &node : contact_nodes)
-        if (node.owned)
-          {
-            for (unsigned int m = 0; m < n; ++m)
-              row[m] = modes[m].value(node.position) * node.normal;
-            add_row();
-          }
+      for (const auto &[position, direction] : contact_directions)
+        {
+          for (unsigned int m = 0; m < n; ++m)
+            row[m] = modes[m].value(position) * direction;
+          add_row();
+        }
     Utilities::MPI::sum(gram, discretisation.mpi_communicator(), gram);
 
     // Cholesky in the order of the modes: a mode whose Schur complement on
@@ -282,12 +282,12 @@ namespace signorini
   rigid_body_modes(const Discretisation<3> &);
   template void
   check_rigid_motions_held(const Discretisation<2> &,
-                           const std::vector<ContactNode<2>> &,
+                           const std::vector<HeldDirection<2>> &,
                            const std::vector<RigidMode<2>> &,
                            const bool);
   template void
   check_rigid_motions_held(const Discretisation<3> &,
-                           const std::vector<ContactNode<3>> &,
+                           const std::vector<HeldDirection<3>> &,
                            const std::vector<RigidMode<3>> &,
                            const bool);
 } // namespace signorini

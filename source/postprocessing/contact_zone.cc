@@ -49,7 +49,7 @@ namespace signorini
                 zone.supported_force[d] += p * node.mass * node.normal[d];
                 zone.supported = true;
               }
-          if (node.active)
+          if (node.in_contact())
             {
               mean_normal[node.obstacle] += node.normal;
               ++n_active[node.obstacle];
@@ -79,7 +79,7 @@ namespace signorini
           length > 0 ? mean_normal[k] / length : mean_normal[k]);
         double low = std::numeric_limits<double>::max(), high = -low;
         for (const auto &node : nodes)
-          if (node.owned && node.active && node.obstacle == k)
+          if (node.owned && node.in_contact() && node.obstacle == k)
             {
               const double s = tangent * node.position;
               low            = std::min(low, s);
@@ -127,7 +127,7 @@ namespace signorini
       if (at == node_at.end() || nodes[at->second].obstacle != k)
         return 0.;
       if (active)
-        return nodes[at->second].active ? 1. : 0.;
+        return nodes[at->second].in_contact() ? 1. : 0.;
       return static_cast<double>(pressure(i));
     };
     const auto nodal_value = [&](const types::global_dof_index i,

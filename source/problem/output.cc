@@ -70,7 +70,7 @@ namespace signorini
     for (const auto &node : contact_surface.nodes())
       if (node.owned)
         {
-          active += node.active ? 1 : 0;
+          active += node.in_contact() ? 1 : 0;
           // A vertex's force once, at its first node.
           if (node.primary)
             for (unsigned int d = 0; d < dim; ++d)
@@ -96,7 +96,7 @@ namespace signorini
       contact_force[0] = 0.;
     penetration = Utilities::MPI::max(penetration, mpi_communicator);
     row.add_count("active_set", active);
-    strategy->report(row, pcout);
+    formulation->report(row, pcout);
     for (unsigned int d = 0; d < dim; ++d)
       row.add(std::string("contact_force_") + axes[d], contact_force[d]);
     row.add("max_penetration", penetration);
@@ -214,7 +214,7 @@ namespace signorini
     // cells reach contact nodes that another owns).
     VectorType owned_active(owned_dofs, mpi_communicator);
     for (const auto &node : contact_surface.nodes())
-      if (node.owned && node.active)
+      if (node.owned && node.in_contact())
         owned_active(node.scalar_dof) = 1.;
     owned_active.compress(VectorOperation::insert);
     VectorType active;

@@ -95,10 +95,16 @@ namespace signorini
          {"Obstacle/Contact boundary ids", parameters.obstacle.contact_ids}});
     }
     setup_system();
-    check_rigid_motions_held(discretisation,
-                             contact_surface.nodes(),
-                             rigid_body_modes(discretisation),
-                             parameters.contact.acts());
+    {
+      std::vector<HeldDirection<dim>> contact_directions;
+      for (const auto &node : contact_surface.nodes())
+        if (node.owned)
+          contact_directions.push_back({node.position, node.normal});
+      check_rigid_motions_held(discretisation,
+                               contact_directions,
+                               rigid_body_modes(discretisation),
+                               parameters.contact.acts());
+    }
     if (const auto warning =
           parameters.material.check_element(discretisation.simplex());
         !warning.empty() &&
@@ -176,7 +182,7 @@ namespace signorini
   {
     elastic_operator->assemble_load();
     newton.start_cycle();
-    strategy->solve(newton, cycle);
+    formulation->solve(newton, cycle);
   }
 
   template <int dim>

@@ -36,13 +36,16 @@ namespace signorini
     , contact_surface(parameters.obstacle.contact_ids,
                       *obstacle,
                       parameters.contact.acts())
-    , strategy(create_contact_strategy<dim>(parameters.contact,
-                                            parameters.material.young_modulus,
-                                            pcout))
+    , law(create_contact_law<dim>(parameters.contact))
+    , formulation(
+        create_contact_formulation<dim>(parameters.contact,
+                                        parameters.material.young_modulus,
+                                        pcout))
     , newton(discretisation,
              *elastic_operator,
              contact_surface,
-             *strategy,
+             *law,
+             *formulation,
              parameters.contact,
              parameters.output.verbose,
              solution,

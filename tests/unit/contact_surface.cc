@@ -120,7 +120,7 @@ namespace
         if (i > 0 && nodes[i - 1].scalar_dof >= node.scalar_dof)
           sorted = false;
         scalar_last  = scalar_last && node.scalar_dof == node.dofs[dim - 1];
-        owned        = owned && node.owned && !node.active;
+        owned        = owned && node.owned && !node.in_contact();
         worst_gap    = std::max(worst_gap,
                              std::abs(node.gap - (node.position[dim - 1] -
                                                   height(node.position))));
@@ -202,17 +202,17 @@ end
     // Active set signature: the count of active nodes and a hash of which.
     auto      &nodes     = scene.surface->nodes();
     const auto none      = scene.surface->active_set_signature();
-    nodes[1].active      = true;
-    nodes[3].active      = true;
+    nodes[1].state       = NodeState::closed;
+    nodes[3].state       = NodeState::closed;
     const auto one_three = scene.surface->active_set_signature();
-    nodes[3].active      = false;
-    nodes[2].active      = true;
+    nodes[3].state       = NodeState::open;
+    nodes[2].state       = NodeState::closed;
     const auto one_two   = scene.surface->active_set_signature();
-    nodes[2].active      = false;
-    nodes[3].active      = true;
+    nodes[2].state       = NodeState::open;
+    nodes[3].state       = NodeState::closed;
     const auto again     = scene.surface->active_set_signature();
     for (auto &node : nodes)
-      node.active = true;
+      node.state = NodeState::closed;
     const auto all = scene.surface->active_set_signature();
     std::cout << "  active_set_signature counts: none " << none.first
               << ", nodes {1, 3} " << one_three.first << ", {1, 2} "
@@ -228,7 +228,7 @@ end
              std::abs(one_two.first - 2.) + std::abs(all.first - 5.),
            0.);
     for (auto &node : nodes)
-      node.active = false;
+      node.state = NodeState::open;
 
     // deformed_gap = gap + n.u for u = (0.3 + x, -0.05 - 0.1 x): only the
     // normal (y) component counts.

@@ -22,6 +22,14 @@
 
 namespace signorini
 {
+  /** Where a contact node stands: off the obstacle, or on it (closed: no
+   * friction; friction's stick and slip will join it). */
+  enum class NodeState : unsigned char
+  {
+    open,
+    closed
+  };
+
   /**
    * A vertex of the candidate contact boundary facing one obstacle, along
    * whose normal it may move (its displacement along the normal is not all
@@ -43,8 +51,12 @@ namespace signorini
     dealii::types::global_dof_index scalar_dof;
     /** Where the node is [mm]. */
     dealii::Point<dim> position;
-    /** The obstacle's outward unit normal at the node. */
-    dealii::Tensor<1, dim> normal;
+    /** The node's frame: the obstacle's outward unit normal at the node,
+     * and unit tangents that make it a right-handed orthonormal frame (in
+     * 2D t = (-n_y, n_x); in 3D the first tangent lies in the plane of n
+     * and the axis along which n is smallest). */
+    dealii::Tensor<1, dim>                      normal;
+    std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
     /** Initial gap to the obstacle along the normal [mm]. */
     double gap;
     /** Which obstacle the node faces (its index in the ObstacleSet). */
@@ -54,14 +66,21 @@ namespace signorini
      * axisymmetric model]; set on owned nodes only. */
     double mass = 0.;
     bool   owned;
-    /** In the contact strategy's active set. */
-    bool active = false;
+    /** Open, or in contact in the way the contact law says. */
+    NodeState state = NodeState::open;
     /** Whether this is the vertex's first node (its nearest obstacle):
      * quantities of the vertex (its nodal force) count there once. */
     bool primary = true;
     /** The corner the node belongs to (an index into
      * ContactSurface::corners()), or invalid_unsigned_int. */
     unsigned int corner = dealii::numbers::invalid_unsigned_int;
+
+    /** Whether the node is on the obstacle (in the active set). */
+    bool
+    in_contact() const
+    {
+      return state != NodeState::open;
+    }
 
     /** n.u at the node, for the displacement @p u [mm]. */
     double
@@ -74,12 +93,19 @@ namespace signorini
     }
   };
 
+  /** Unit tangents completing the unit normal @p n to an orthonormal frame
+   * (see ContactNode::tangents); t_1 x t_2 = n in 3D. */
+  template <int dim>
+  std::array<dealii::Tensor<1, dim>, dim - 1>
+  tangent_frame(const dealii::Tensor<1, dim> &n);
+
   /**
    * The candidate contact nodes of the current mesh: the vertices on the
    * contact boundary ids, each facing the obstacle nearest to it (smallest
    * gap) and, as a corner, up to dim obstacles whose normals are
-   * independent on its free components; each node with its normal, gap and
-   * lumped mass, and the active set of the contact strategy.
+   * independent on its free components; each node with its frame, gap and
+   * lumped mass, and its state (the active set of the contact
+   * formulation).
    */
   template <int dim>
   class ContactSurface
@@ -134,8 +160,8 @@ namespace signorini
     double
     touching_tolerance() const;
 
-    /** The number of active nodes and a hash of which they are, the same on
-     * every process. */
+    /** The number of nodes in contact and a hash of which they are (and of
+     * their states), the same on every process. */
     std::pair<unsigned int, std::size_t>
     active_set_signature() const;
 

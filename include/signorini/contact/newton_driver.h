@@ -5,8 +5,9 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <signorini/contact/contact_formulation.h>
+#include <signorini/contact/contact_law.h>
 #include <signorini/contact/contact_parameters.h>
-#include <signorini/contact/contact_strategy.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/elastic_operator.h>
@@ -17,11 +18,13 @@
 namespace signorini
 {
   /**
-   * The semismooth Newton iteration of every contact strategy: assemble and
-   * solve the Newton system of the current active set, compute the contact
-   * forces and the residual, update the active set; until the active set is
-   * settled and the residual small, with cycle detection, stall detection and
-   * the strategy's cycle breaking. It writes the displacement and the
+   * The semismooth Newton iteration of every contact formulation and law:
+   * assemble and solve the Newton system of the current active set (the
+   * formulation's SystemAdditions for the law's conditions), compute the
+   * contact forces and the residual, update the nodes' states (the law's,
+   * from the formulation's augmented pressures); until the states settle
+   * and the residual is small, with cycle detection, stall detection and
+   * the formulation's cycle breaking. It writes the displacement and the
    * contact pressure.
    */
   template <int dim>
@@ -35,7 +38,8 @@ namespace signorini
     NewtonDriver(const Discretisation<dim>  &discretisation,
                  ElasticOperator<dim>       &elastic_operator,
                  ContactSurface<dim>        &surface,
-                 ContactStrategy<dim>       &strategy,
+                 const ContactLaw<dim>      &law,
+                 ContactFormulation<dim>    &formulation,
                  const ContactParameters    &parameters,
                  const bool                  verbose,
                  VectorType                 &solution,
@@ -51,8 +55,8 @@ namespace signorini
     void
     start_cycle();
 
-    /** Marks the nodes active that touch or penetrate, or that the
-     * strategy's rule makes active, from the current displacement and
+    /** Puts the nodes in contact that touch or penetrate, and sets the
+     * others' states by the law, from the current displacement and
      * pressure. */
     void
     initialize_active_set();
@@ -68,7 +72,8 @@ namespace signorini
     void
     solve_once();
 
-    /** The strategy's linearisation of the current active set. */
+    /** The formulation's additions for the law's conditions of the
+     * current states. */
     void
     assemble_newton_system();
 
@@ -115,7 +120,7 @@ namespace signorini
     double
     evaluate_residual();
 
-    /** Applies the strategy's rule; returns the number of changes. */
+    /** Sets the nodes' states by the law; returns the number of changes. */
     unsigned int
     update_active_set();
 
@@ -128,7 +133,8 @@ namespace signorini
     const Discretisation<dim>  &discretisation;
     ElasticOperator<dim>       &elastic_operator;
     ContactSurface<dim>        &surface;
-    ContactStrategy<dim>       &strategy;
+    const ContactLaw<dim>      &law;
+    ContactFormulation<dim>    &formulation;
     const ContactParameters    &parameters;
     const bool                  verbose;
     VectorType                 &solution;
@@ -136,7 +142,7 @@ namespace signorini
     VectorType                  contact_residual;
     dealii::ConditionalOStream &pcout;
     dealii::TimerOutput        &timer;
-    ContactLinearisation<dim>   linearisation;
+    SystemAdditions<dim>        additions;
     unsigned int                newton_iterations = 0;
   };
 } // namespace signorini

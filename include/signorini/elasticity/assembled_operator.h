@@ -21,11 +21,11 @@ namespace signorini
 {
   /**
    * The elastic operator as an assembled Trilinos matrix: cell matrices from
-   * CellStiffness (once per cell shape), the contact linearisation's held
-   * nodes as constraints and its springs added to the matrix, solved by
+   * CellStiffness (once per cell shape), the additions' constraint lines
+   * condensed and their blocks added to the matrix, solved by
    * LinearSystemSolver. The matrix and its factorisation or AMG are kept
-   * while the linearisation's key stays; only the extra forces then change
-   * the right-hand side.
+   * while the additions' key stays; only their forces then change the
+   * right-hand side.
    */
   template <int dim>
   class AssembledOperator : public ElasticOperator<dim>
@@ -55,9 +55,9 @@ namespace signorini
     residual(const VectorType &u, VectorType &residual) override;
 
     void
-    solve(const ContactLinearisation<dim> &linearisation,
-          VectorType                      &u,
-          const bool                       final_step) override;
+    solve(const SystemAdditions<dim> &additions,
+          VectorType                 &u,
+          const bool                  final_step) override;
 
     void
     invalidate() override;
@@ -66,15 +66,15 @@ namespace signorini
     release() override;
 
   private:
-    /** The Newton system of @p linearisation, reusing the matrix if its key
-     * is that of the last one. */
+    /** The Newton system with the @p additions, reusing the matrix if
+     * their key is that of the last one. */
     void
-    assemble_newton_system(const ContactLinearisation<dim> &linearisation);
+    assemble_newton_system(const SystemAdditions<dim> &additions);
 
-    /** The stiffness matrix with the current constraints and the springs,
-     * and the right-hand side without the extra forces. */
+    /** The stiffness matrix with the current constraints and the blocks,
+     * and the right-hand side without the forces. */
     void
-    assemble_matrix(const ContactLinearisation<dim> &linearisation);
+    assemble_matrix(const SystemAdditions<dim> &additions);
 
     const Discretisation<dim>    &discretisation;
     Loads<dim>                   &loads;
@@ -84,10 +84,10 @@ namespace signorini
     /** Cell stiffness matrices, computed once per cell shape. */
     CellStiffness<dim> cell_stiffness;
     const Material    &material;
-    /** The discretisation's constraints plus the held contact nodes. */
+    /** The discretisation's constraints plus the additions' lines. */
     dealii::AffineConstraints<double> constraints;
-    /** The dofs that the held contact nodes' constraints solve for. */
-    std::vector<dealii::types::global_dof_index> held_dofs;
+    /** The dofs that the additions' constraint lines solve for. */
+    std::vector<dealii::types::global_dof_index> added_dofs;
     dealii::TrilinosWrappers::SparseMatrix       system_matrix;
     VectorType                                   system_rhs;
     /** system_rhs without the extra forces. */
@@ -96,8 +96,8 @@ namespace signorini
     /** The solver, with the factorisation or AMG of system_matrix. */
     LinearSystemSolver linear_system_solver;
     bool               matrix_assembled = false;
-    /** The key of the linearisation system_matrix was assembled for. */
-    std::pair<std::pair<unsigned int, std::size_t>, double> assembled_for;
+    /** The key of the additions system_matrix was assembled for. */
+    typename SystemAdditions<dim>::Key assembled_for;
   };
 } // namespace signorini
 

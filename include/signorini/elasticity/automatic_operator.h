@@ -55,9 +55,9 @@ namespace signorini
     residual(const VectorType &u, VectorType &residual) override;
 
     void
-    solve(const ContactLinearisation<dim> &linearisation,
-          VectorType                      &u,
-          const bool                       final_step) override;
+    solve(const SystemAdditions<dim> &additions,
+          VectorType                 &u,
+          const bool                  final_step) override;
 
     void
     invalidate() override;

@@ -5,7 +5,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <signorini/contact/contact_linearisation.h>
+#include <signorini/elasticity/system_additions.h>
 
 #include <memory>
 
@@ -13,10 +13,11 @@ namespace signorini
 {
   /**
    * The linear elastic operator of the body on the current mesh: its load,
-   * its residual, and the solution of a Newton system, the elastic operator
-   * with a contact strategy's linearisation. Implementations:
-   * AssembledOperator (a Trilinos matrix, cell stiffness cache, direct or
-   * AMG-CG solves with their reuse).
+   * its residual, and the solution of a Newton system: the elastic operator
+   * with what a law adds to it (SystemAdditions, the only thing it knows of
+   * contact). Implementations: AssembledOperator (a Trilinos matrix, cell
+   * stiffness cache, direct or AMG-CG/GMRES solves with their reuse) and
+   * MatrixFreeOperator (cell kernels, geometric multigrid).
    */
   template <int dim>
   class ElasticOperator
@@ -45,16 +46,18 @@ namespace signorini
     residual(const VectorType &u, VectorType &residual) = 0;
 
     /**
-     * Solves the Newton system of @p linearisation for the ghosted
+     * Solves the Newton system K u = f with the @p additions for the ghosted
      * displacement @p u, which is the initial guess of an iterative solver
-     * and is returned with all constraints satisfied. Iterative solvers stop
-     * at Linear solver/Tolerance on the @p final_step of a Newton iteration,
-     * at its Newton tolerance before. Throws SolverFailure.
+     * and is returned with all constraints satisfied: by CG where the
+     * additions keep the system symmetric, by GMRES where they do not.
+     * Iterative solvers stop at Linear solver/Tolerance on the
+     * @p final_step of a Newton iteration, at its Newton tolerance before.
+     * Throws SolverFailure.
      */
     virtual void
-    solve(const ContactLinearisation<dim> &linearisation,
-          VectorType                      &u,
-          const bool                       final_step) = 0;
+    solve(const SystemAdditions<dim> &additions,
+          VectorType                 &u,
+          const bool                  final_step) = 0;
 
     /** Forgets the system built last: the next solve builds it anew (the
      * matrix and its preconditioner, or the cell data and the multigrid

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -18,6 +19,16 @@ class Epetra_LinearProblem;
 
 namespace signorini
 {
+  /** GMRES for the non-symmetric Newton systems (friction's): right
+   * preconditioning, so that it stops on the true residual as CG does, and
+   * restarts after 100 vectors. */
+  template <typename VectorType>
+  typename dealii::SolverGMRES<VectorType>::AdditionalData
+  gmres_data()
+  {
+    return typename dealii::SolverGMRES<VectorType>::AdditionalData(100, true);
+  }
+
   /**
    * The linear solver of the Newton steps, with what it can keep between
    * them:
@@ -61,9 +72,10 @@ namespace signorini
     matrix_changed(const bool few_rows);
 
     /**
-     * Solves @p matrix x = @p rhs; @p solution is the initial guess of CG,
-     * which stops at a residual of @p relative_tolerance times the norm of
-     * @p rhs (the direct solver ignores it). @p components is the number
+     * Solves @p matrix x = @p rhs; @p solution is the initial guess of CG
+     * (GMRES if the matrix is not @p symmetric), which stops at a residual
+     * of @p relative_tolerance times the norm of @p rhs (the direct solver
+     * ignores it). @p components is the number
      * of displacement components, which the dofs of each vertex hold in
      * consecutive order: the AMG aggregates vertices whole and takes the
      * translations as its near-null space. Returns the iterations (1 for
@@ -75,7 +87,8 @@ namespace signorini
           dealii::TrilinosWrappers::MPI::Vector        &solution,
           const dealii::TrilinosWrappers::MPI::Vector  &rhs,
           const unsigned int                            components,
-          const double                                  relative_tolerance);
+          const double                                  relative_tolerance,
+          const bool                                    symmetric = true);
 
   private:
     void
@@ -87,12 +100,14 @@ namespace signorini
     void
     build_amg(const dealii::TrilinosWrappers::SparseMatrix &matrix,
               const unsigned int                            components);
-    /** CG iterations; throws SolverFailure if it does not converge. */
+    /** CG (GMRES if not @p symmetric) iterations with the AMG; throws
+     * SolverFailure if it does not converge. */
     unsigned int
-    solve_cg(const dealii::TrilinosWrappers::SparseMatrix &matrix,
-             dealii::TrilinosWrappers::MPI::Vector        &solution,
-             const dealii::TrilinosWrappers::MPI::Vector  &rhs,
-             const double                                  relative_tolerance);
+    solve_iterative(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                    dealii::TrilinosWrappers::MPI::Vector        &solution,
+                    const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+                    const double relative_tolerance,
+                    const bool   symmetric);
 
     const LinearSolverParameters         &parameters;
     const bool                            remedies;

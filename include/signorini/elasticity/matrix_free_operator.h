@@ -31,12 +31,14 @@ namespace signorini
    * (ElasticLevelOperator), the Newton systems solved by CG with geometric
    * multigrid (ElasticMultigrid).
    *
-   * The Newton system of a contact linearisation: with G the discretisation's
-   * constraints and the held nodes' (closed together, as AssembledOperator
-   * condenses them), u = u0 + d, where u0 is the current displacement with
-   * G applied and d solves P^T (K + S) P d = -R(u0) on the dofs G leaves
-   * free; P sets the held dofs from the other dofs of their vertex, S are
-   * the springs, and R is the residual K u - f of the Newton system. The
+   * The Newton system with SystemAdditions: with G the discretisation's
+   * constraints and the additions' lines (closed together, as
+   * AssembledOperator condenses them), u = u0 + d, where u0 is the current
+   * displacement with G applied and d solves P^T (K + B) P d = -R(u0) on
+   * the dofs G leaves free; P sets the dofs of the added lines from the
+   * other dofs of their vertex, B are the blocks (at one vertex each), and
+   * R is the residual of the Newton system. CG solves it where the
+   * additions are symmetric, GMRES where not, with the same multigrid. The
    * same system as the assembled one, to the solvers' tolerance.
    *
    * With @p remedies, a solve that fails is repeated by an AssembledOperator
@@ -75,9 +77,9 @@ namespace signorini
     residual(const VectorType &u, VectorType &residual) override;
 
     void
-    solve(const ContactLinearisation<dim> &linearisation,
-          VectorType                      &u,
-          const bool                       final_step) override;
+    solve(const SystemAdditions<dim> &additions,
+          VectorType                 &u,
+          const bool                  final_step) override;
 
     void
     invalidate() override;
@@ -101,23 +103,26 @@ namespace signorini
     void
     setup_levels();
 
-    /** The held nodes' constraints, the springs, and the multigrid's
-     * contact for @p linearisation. */
+    /** The additions' constraint lines and blocks on the fine level, and
+     * the multigrid's contact (blocks, constraint springs) for
+     * @p additions. */
     void
-    setup_contact(const ContactLinearisation<dim> &linearisation);
+    setup_contact(const SystemAdditions<dim> &additions);
 
-    /** @p r = P^T (K u - f + S u + the springs' forces) for @p u with the
-     * constraints G applied; zero at the held and constrained dofs. */
+    /** @p r = P^T (K u - f + B u - the blocks' and the forces' right-hand
+     * side) for @p u with the constraints G applied; zero at the
+     * constrained dofs. */
     void
-    newton_residual(const ContactLinearisation<dim> &linearisation,
-                    const LAVector                  &u,
-                    LAVector                        &r) const;
+    newton_residual(const SystemAdditions<dim> &additions,
+                    const LAVector             &u,
+                    LAVector                   &r) const;
 
-    /** CG with multigrid on d; returns the iterations. */
+    /** CG (GMRES for non-symmetric additions) with multigrid on d; returns
+     * the iterations. */
     unsigned int
-    solve_cg(const ContactLinearisation<dim> &linearisation,
-             VectorType                      &u,
-             const bool                       final_step);
+    solve_iterative(const SystemAdditions<dim> &additions,
+                    VectorType                 &u,
+                    const bool                  final_step);
 
     void
     to_la(const VectorType &in, LAVector &out) const;
@@ -137,14 +142,14 @@ namespace signorini
     std::shared_ptr<ElasticLevelOperator<dim>> fine;
     ElasticMultigrid<dim>                      multigrid;
     bool                                       levels_ready = false;
-    /** The discretisation's constraints plus the held contact nodes. */
+    /** The discretisation's constraints plus the additions' lines. */
     dealii::AffineConstraints<double> constraints;
     /** distribute() of `constraints` on the fine operator's vectors. */
-    LocalConstraints local_constraints;
-    bool             contact_ready = false;
-    std::pair<std::pair<unsigned int, std::size_t>, double> contact_for;
-    VectorType                                              load_vector;
-    LAVector                                                load_la;
+    LocalConstraints                   local_constraints;
+    bool                               contact_ready = false;
+    typename SystemAdditions<dim>::Key contact_for;
+    VectorType                         load_vector;
+    LAVector                           load_la;
     /** The assembled operator of a remedy, until the next mesh. */
     std::unique_ptr<AssembledOperator<dim>> fallback;
   };

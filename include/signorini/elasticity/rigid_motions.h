@@ -4,7 +4,6 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <signorini/contact/contact_surface.h>
 #include <signorini/discretisation/discretisation.h>
 
 #include <string>
@@ -42,23 +41,33 @@ namespace signorini
   std::vector<RigidMode<dim>>
   rigid_body_modes(const Discretisation<dim> &discretisation);
 
+  /** A direction along which something other than a support may hold the
+   * body at a point (a candidate contact node along its normal). */
+  template <int dim>
+  struct HeldDirection
+  {
+    dealii::Point<dim>     position;
+    dealii::Tensor<1, dim> direction;
+  };
+
   /**
    * Checks, before cycle 0, that what can hold the body holds each of the
    * rigid @p modes: the Dirichlet data (every dof of a fixed component) and,
-   * if @p contact_can_hold, the candidate @p contact_nodes along their
-   * normals. The modes evaluated at these constraints form a small matrix
-   * (its Gram matrix summed over the processes, so every process decides
-   * alike); a combination of modes that it maps to zero is free. Throws an
-   * InputError on the entry `Boundary conditions/Dirichlet` naming each free
-   * motion, e.g. "nothing holds the body against a translation along x".
-   * Collective.
+   * if @p contact_can_hold, the @p contact_directions (this process's
+   * candidate contact nodes along their normals). The modes evaluated at these
+   * constraints form a small matrix (its Gram matrix summed over the processes,
+   * so every process decides alike); a combination of modes that it maps to
+   * zero is free. Throws an InputError on the entry `Boundary
+   * conditions/Dirichlet` naming each free motion, e.g. "nothing holds the body
+   * against a translation along x". Collective.
    */
   template <int dim>
   void
-  check_rigid_motions_held(const Discretisation<dim>           &discretisation,
-                           const std::vector<ContactNode<dim>> &contact_nodes,
-                           const std::vector<RigidMode<dim>>   &modes,
-                           const bool contact_can_hold);
+  check_rigid_motions_held(
+    const Discretisation<dim>             &discretisation,
+    const std::vector<HeldDirection<dim>> &contact_directions,
+    const std::vector<RigidMode<dim>>     &modes,
+    const bool                             contact_can_hold);
 } // namespace signorini
 
 #endif

@@ -7,7 +7,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <signorini/contact/contact_strategy.h>
+#include <signorini/contact/contact_formulation.h>
+#include <signorini/contact/contact_law.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/contact/newton_driver.h>
 #include <signorini/contact/obstacle_set.h>
@@ -32,9 +33,9 @@ namespace signorini
    * cycle's state (displacement, contact pressure, error indicators) and
    * connects the rooms that do the work: the Discretisation, the
    * ElasticOperator, the Obstacle and the ContactSurface, the
-   * ContactStrategy with its NewtonDriver (assemble_newton_system, solve,
-   * update_active_set), the postprocessing, and the RunRecord with its
-   * checkpoints.
+   * ContactLaw and the ContactFormulation with their NewtonDriver
+   * (assemble_newton_system, solve, update_active_set), the postprocessing, and
+   * the RunRecord with its checkpoints.
    */
   template <int dim>
   class ContactProblem
@@ -55,7 +56,7 @@ namespace signorini
     // run.cc
     void
     run_cycles(const bool resume);
-    /** The contact problem of one cycle by the strategy. */
+    /** The contact problem of one cycle by the formulation. */
     void
     solve(const unsigned int cycle);
     void
@@ -120,12 +121,13 @@ namespace signorini
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;
 
-    Discretisation<dim>                   discretisation;
-    Loads<dim>                            loads;
-    std::unique_ptr<ElasticOperator<dim>> elastic_operator;
-    std::unique_ptr<ObstacleSet<dim>>     obstacle;
-    ContactSurface<dim>                   contact_surface;
-    std::unique_ptr<ContactStrategy<dim>> strategy;
+    Discretisation<dim>                      discretisation;
+    Loads<dim>                               loads;
+    std::unique_ptr<ElasticOperator<dim>>    elastic_operator;
+    std::unique_ptr<ObstacleSet<dim>>        obstacle;
+    ContactSurface<dim>                      contact_surface;
+    std::unique_ptr<ContactLaw<dim>>         law;
+    std::unique_ptr<ContactFormulation<dim>> formulation;
 
     /** Displacement [mm] and contact pressure [MPa] (at the contact nodes'
      * scalar dofs), with ghost entries. */

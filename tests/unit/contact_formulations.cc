@@ -1,8 +1,8 @@
-// Each contact strategy (active set, penalty, augmented Lagrangian, none) on
+// Each contact formulation (active set, penalty, augmented Lagrangian, none) on
 // a plane-strain block whose answer is known, solved through the rooms as
 // ContactProblem wires them, without the problem class: Discretisation,
-// Loads, AssembledOperator, HeightObstacle, ContactSurface, the strategy of
-// create_contact_strategy and the NewtonDriver.
+// Loads, AssembledOperator, HeightObstacle, ContactSurface, the formulation of
+// create_contact_formulation with the frictionless law, and the NewtonDriver.
 //
 // E = 1000, nu = 0.25, the unit square in 4 x 4 Q1 cells, x held on the left
 // side (id 0), no body force. With sigma_xx = 0 and a uniform sigma_yy = s
@@ -27,7 +27,8 @@
 #include <deal.II/base/timer.h>
 
 #include <signorini/base/failures.h>
-#include <signorini/contact/contact_strategy.h>
+#include <signorini/contact/contact_formulation.h>
+#include <signorini/contact/contact_law.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/contact/newton_driver.h>
 #include <signorini/contact/obstacle_set.h>
@@ -86,18 +87,19 @@ namespace
   {
     using VectorType = TrilinosWrappers::MPI::Vector;
 
-    Parameters<2>                       parameters;
-    ConditionalOStream                  pcout;
-    TimerOutput                         timer;
-    std::unique_ptr<Discretisation<2>>  discretisation;
-    std::unique_ptr<Loads<2>>           loads;
-    std::unique_ptr<ElasticOperator<2>> elastic_operator;
-    std::unique_ptr<ObstacleSet<2>>     obstacle;
-    std::unique_ptr<ContactSurface<2>>  surface;
-    std::unique_ptr<ContactStrategy<2>> strategy;
-    VectorType                          solution;
-    VectorType                          pressure;
-    std::unique_ptr<NewtonDriver<2>>    newton;
+    Parameters<2>                          parameters;
+    ConditionalOStream                     pcout;
+    TimerOutput                            timer;
+    std::unique_ptr<Discretisation<2>>     discretisation;
+    std::unique_ptr<Loads<2>>              loads;
+    std::unique_ptr<ElasticOperator<2>>    elastic_operator;
+    std::unique_ptr<ObstacleSet<2>>        obstacle;
+    std::unique_ptr<ContactSurface<2>>     surface;
+    std::unique_ptr<ContactLaw<2>>         law;
+    std::unique_ptr<ContactFormulation<2>> formulation;
+    VectorType                             solution;
+    VectorType                             pressure;
+    std::unique_ptr<NewtonDriver<2>>       newton;
 
     explicit Scene(const std::string &text)
       : pcout(std::cout, false)
@@ -127,13 +129,16 @@ namespace
       surface =
         std::make_unique<ContactSurface<2>>(parameters.obstacle.contact_ids,
                                             *obstacle);
-      strategy = create_contact_strategy<2>(parameters.contact,
-                                            parameters.material.young_modulus,
-                                            pcout);
-      newton   = std::make_unique<NewtonDriver<2>>(*discretisation,
+      law = create_contact_law<2>(parameters.contact);
+      formulation =
+        create_contact_formulation<2>(parameters.contact,
+                                      parameters.material.young_modulus,
+                                      pcout);
+      newton = std::make_unique<NewtonDriver<2>>(*discretisation,
                                                  *elastic_operator,
                                                  *surface,
-                                                 *strategy,
+                                                 *law,
+                                                 *formulation,
                                                  parameters.contact,
                                                  false,
                                                  solution,
@@ -167,7 +172,7 @@ namespace
     {
       elastic_operator->assemble_load();
       newton->start_cycle();
-      strategy->solve(*newton, 0);
+      formulation->solve(*newton, 0);
     }
   };
 
@@ -216,10 +221,10 @@ namespace
         p_min            = std::min(p_min, p);
         p_max            = std::max(p_max, p);
         force += node.normal_displacement(scene.newton->residual());
-        active += node.active ? 1 : 0;
+        active += node.in_contact() ? 1 : 0;
       }
     StatisticsRow row;
-    scene.strategy->report(row, scene.pcout);
+    scene.formulation->report(row, scene.pcout);
 
     // The strategies' statistics columns: multiplier updates, epsilon.
     std::string columns;
@@ -233,7 +238,7 @@ namespace
       catch (const std::out_of_range &)
         {
         }
-    std::cout << "  " << scene.strategy->name() << ": Newton iterations "
+    std::cout << "  " << scene.formulation->name() << ": Newton iterations "
               << scene.newton->iterations() << columns << "; " << active
               << " of " << nodes.size() << " contact nodes active\n";
     report("|active nodes - expected|",

@@ -2,9 +2,10 @@
 
 #include <signorini/base/failures.h>
 #include <signorini/base/text.h>
-#include <signorini/contact/augmented_lagrangian_strategy.h>
+#include <signorini/contact/augmented_lagrangian_formulation.h>
+#include <signorini/contact/condition_enforcement.h>
 #include <signorini/contact/newton_driver.h>
-#include <signorini/contact/penalty_strategy.h>
+#include <signorini/contact/penalty_formulation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ namespace signorini
   using namespace dealii;
 
   template <int dim>
-  AugmentedLagrangianStrategy<dim>::AugmentedLagrangianStrategy(
+  AugmentedLagrangianFormulation<dim>::AugmentedLagrangianFormulation(
     const ContactParameters &parameters,
     const double             young_modulus,
     ConditionalOStream      &pcout)
@@ -26,15 +27,15 @@ namespace signorini
 
   template <int dim>
   std::string
-  AugmentedLagrangianStrategy<dim>::name() const
+  AugmentedLagrangianFormulation<dim>::name() const
   {
     return "augmented lagrangian";
   }
 
   template <int dim>
   void
-  AugmentedLagrangianStrategy<dim>::solve(NewtonDriver<dim> &newton,
-                                          const unsigned int cycle)
+  AugmentedLagrangianFormulation<dim>::solve(NewtonDriver<dim> &newton,
+                                             const unsigned int cycle)
   {
     epsilon            = penalty_compliance(parameters,
                                  newton.minimal_cell_diameter(),
@@ -91,7 +92,7 @@ namespace signorini
 
   template <int dim>
   double
-  AugmentedLagrangianStrategy<dim>::update_multipliers(
+  AugmentedLagrangianFormulation<dim>::update_multipliers(
     const NewtonDriver<dim> &newton)
   {
     // Uzawa: the multiplier takes the pressure of the inner solution,
@@ -114,49 +115,51 @@ namespace signorini
   }
 
   template <int dim>
-  bool
-  AugmentedLagrangianStrategy<dim>::update_rule(const unsigned int i,
-                                                const ContactNode<dim> &,
-                                                const double gap,
-                                                const double) const
+  double
+  AugmentedLagrangianFormulation<dim>::state_pressure(const unsigned int i,
+                                                      const ContactNode<dim> &,
+                                                      const double gap,
+                                                      const double) const
   {
-    // Where the pressure multiplier - gap / epsilon is positive, a gap
-    // counting as negative only beyond round-off.
-    return gap + touching_tolerance < epsilon * multipliers[i];
-  }
-
-  template <int dim>
-  void
-  AugmentedLagrangianStrategy<dim>::linearise(
-    const ContactSurface<dim> &surface,
-    ContactLinearisation<dim> &linearisation) const
-  {
-    add_penalty_springs(surface, epsilon, multipliers, linearisation);
+    // The pressure multiplier - gap / epsilon, a gap counting as negative
+    // only beyond round-off.
+    return multipliers[i] - (gap + touching_tolerance) / epsilon;
   }
 
   template <int dim>
   double
-  AugmentedLagrangianStrategy<dim>::complementarity_force(
-    const unsigned int      i,
-    const ContactNode<dim> &node,
-    const double,
-    const double,
-    const double gap) const
+  AugmentedLagrangianFormulation<dim>::residual_pressure(
+    const unsigned int i,
+    const ContactNode<dim> &,
+    const double gap,
+    const double) const
   {
-    return node.mass * std::max(0., multipliers[i] - gap / epsilon);
+    return multipliers[i] - gap / epsilon;
+  }
+
+  template <int dim>
+  void
+  AugmentedLagrangianFormulation<dim>::linearise(
+    const ContactSurface<dim> &surface,
+    const ContactLaw<dim>     &law,
+    SystemAdditions<dim>      &additions) const
+  {
+    condition_enforcement::add_springs(
+      surface, law, epsilon, multipliers, additions);
+    additions.key = {surface.active_set_signature(), epsilon};
   }
 
   template <int dim>
   std::string
-  AugmentedLagrangianStrategy<dim>::failure_hint() const
+  AugmentedLagrangianFormulation<dim>::failure_hint() const
   {
     return " is Contact/Penalty parameter too small?";
   }
 
   template <int dim>
   void
-  AugmentedLagrangianStrategy<dim>::report(StatisticsRow      &row,
-                                           ConditionalOStream &pcout) const
+  AugmentedLagrangianFormulation<dim>::report(StatisticsRow      &row,
+                                              ConditionalOStream &pcout) const
   {
     row.add_count("multiplier_updates", multiplier_updates);
     row.add("penalty_parameter", epsilon);
@@ -164,6 +167,6 @@ namespace signorini
           << "penalty parameter " << epsilon << std::endl;
   }
 
-  template class AugmentedLagrangianStrategy<2>;
-  template class AugmentedLagrangianStrategy<3>;
+  template class AugmentedLagrangianFormulation<2>;
+  template class AugmentedLagrangianFormulation<3>;
 } // namespace signorini

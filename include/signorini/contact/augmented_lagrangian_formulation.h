@@ -1,7 +1,7 @@
-#ifndef signorini_contact_augmented_lagrangian_strategy_h
-#define signorini_contact_augmented_lagrangian_strategy_h
+#ifndef signorini_contact_augmented_lagrangian_formulation_h
+#define signorini_contact_augmented_lagrangian_formulation_h
 
-#include <signorini/contact/contact_strategy.h>
+#include <signorini/contact/contact_formulation.h>
 
 #include <vector>
 
@@ -17,12 +17,12 @@ namespace signorini
    * update get a ten times stiffer penalty.
    */
   template <int dim>
-  class AugmentedLagrangianStrategy : public ContactStrategy<dim>
+  class AugmentedLagrangianFormulation : public ContactFormulation<dim>
   {
   public:
-    AugmentedLagrangianStrategy(const ContactParameters    &parameters,
-                                const double                young_modulus,
-                                dealii::ConditionalOStream &pcout);
+    AugmentedLagrangianFormulation(const ContactParameters    &parameters,
+                                   const double                young_modulus,
+                                   dealii::ConditionalOStream &pcout);
 
     std::string
     name() const override;
@@ -30,22 +30,22 @@ namespace signorini
     void
     solve(NewtonDriver<dim> &newton, const unsigned int cycle) override;
 
-    bool
-    update_rule(const unsigned int      i,
-                const ContactNode<dim> &node,
-                const double            gap,
-                const double            pressure) const override;
+    double
+    state_pressure(const unsigned int      i,
+                   const ContactNode<dim> &node,
+                   const double            gap,
+                   const double            pressure) const override;
+
+    double
+    residual_pressure(const unsigned int      i,
+                      const ContactNode<dim> &node,
+                      const double            gap,
+                      const double            pressure) const override;
 
     void
     linearise(const ContactSurface<dim> &surface,
-              ContactLinearisation<dim> &linearisation) const override;
-
-    double
-    complementarity_force(const unsigned int      i,
-                          const ContactNode<dim> &node,
-                          const double            force,
-                          const double            pressure,
-                          const double            gap) const override;
+              const ContactLaw<dim>     &law,
+              SystemAdditions<dim>      &additions) const override;
 
     std::string
     failure_hint() const override;

@@ -1,7 +1,8 @@
 #include <signorini/base/failures.h>
 #include <signorini/base/text.h>
+#include <signorini/contact/condition_enforcement.h>
 #include <signorini/contact/newton_driver.h>
-#include <signorini/contact/penalty_strategy.h>
+#include <signorini/contact/penalty_formulation.h>
 
 #include <algorithm>
 
@@ -21,38 +22,10 @@ namespace signorini
   }
 
   template <int dim>
-  void
-  add_penalty_springs(const ContactSurface<dim> &surface,
-                      const double               epsilon,
-                      const std::vector<double> &multipliers,
-                      ContactLinearisation<dim> &linearisation)
-  {
-    // The obstacle pushes back with p = penetration / epsilon on the
-    // penetrating nodes, p_i m_i = -(u_i.n_i + gap_i) m_i / epsilon; the
-    // augmented Lagrangian adds the multiplier, p = lambda - (u.n + gap) /
-    // epsilon.
-    const auto &nodes = surface.nodes();
-    for (unsigned int i = 0; i < nodes.size(); ++i)
-      if (nodes[i].owned && nodes[i].active)
-        {
-          const auto                                &node = nodes[i];
-          typename ContactLinearisation<dim>::Spring spring;
-          spring.node       = &node;
-          spring.stiffness  = node.mass / epsilon;
-          spring.rest_force = node.mass * node.gap / epsilon;
-          if (!multipliers.empty())
-            spring.extra_force = node.mass * multipliers[i];
-          linearisation.springs.push_back(spring);
-        }
-    linearisation.penalised    = true;
-    linearisation.extra_forces = !multipliers.empty();
-    linearisation.key          = {surface.active_set_signature(), epsilon};
-  }
-
-  template <int dim>
-  PenaltyStrategy<dim>::PenaltyStrategy(const ContactParameters &parameters,
-                                        const double             young_modulus,
-                                        ConditionalOStream      &pcout)
+  PenaltyFormulation<dim>::PenaltyFormulation(
+    const ContactParameters &parameters,
+    const double             young_modulus,
+    ConditionalOStream      &pcout)
     : parameters(parameters)
     , young_modulus(young_modulus)
     , pcout(pcout)
@@ -61,15 +34,15 @@ namespace signorini
 
   template <int dim>
   std::string
-  PenaltyStrategy<dim>::name() const
+  PenaltyFormulation<dim>::name() const
   {
     return "penalty";
   }
 
   template <int dim>
   void
-  PenaltyStrategy<dim>::solve(NewtonDriver<dim> &newton,
-                              const unsigned int cycle)
+  PenaltyFormulation<dim>::solve(NewtonDriver<dim> &newton,
+                                 const unsigned int cycle)
   {
     epsilon            = penalty_compliance(parameters,
                                  newton.minimal_cell_diameter(),
@@ -125,40 +98,40 @@ namespace signorini
   }
 
   template <int dim>
-  bool
-  PenaltyStrategy<dim>::update_rule(const unsigned int,
-                                    const ContactNode<dim> &,
-                                    const double gap,
-                                    const double) const
+  double
+  PenaltyFormulation<dim>::state_pressure(const unsigned int,
+                                          const ContactNode<dim> &,
+                                          const double gap,
+                                          const double) const
   {
     // The penetrating nodes, a gap counting as negative only beyond
     // round-off, so that a node grazing the obstacle does not flip.
-    return (sign_rule ? gap : gap + touching_tolerance) < 0;
-  }
-
-  template <int dim>
-  void
-  PenaltyStrategy<dim>::linearise(
-    const ContactSurface<dim> &surface,
-    ContactLinearisation<dim> &linearisation) const
-  {
-    add_penalty_springs(surface, epsilon, {}, linearisation);
+    return -(sign_rule ? gap : gap + touching_tolerance) / epsilon;
   }
 
   template <int dim>
   double
-  PenaltyStrategy<dim>::complementarity_force(const unsigned int,
-                                              const ContactNode<dim> &node,
-                                              const double,
-                                              const double,
-                                              const double gap) const
+  PenaltyFormulation<dim>::residual_pressure(const unsigned int,
+                                             const ContactNode<dim> &,
+                                             const double gap,
+                                             const double) const
   {
-    return node.mass * std::max(0., 0. - gap / epsilon);
+    return 0. - gap / epsilon;
+  }
+
+  template <int dim>
+  void
+  PenaltyFormulation<dim>::linearise(const ContactSurface<dim> &surface,
+                                     const ContactLaw<dim>     &law,
+                                     SystemAdditions<dim>      &additions) const
+  {
+    condition_enforcement::add_springs(surface, law, epsilon, {}, additions);
+    additions.key = {surface.active_set_signature(), epsilon};
   }
 
   template <int dim>
   std::string
-  PenaltyStrategy<dim>::break_cycle()
+  PenaltyFormulation<dim>::break_cycle()
   {
     // A node whose penetration epsilon x pressure is below the touching
     // tolerance flips on every step; it is penetrating if its gap is
@@ -171,21 +144,21 @@ namespace signorini
 
   template <int dim>
   bool
-  PenaltyStrategy<dim>::cycle_broken() const
+  PenaltyFormulation<dim>::cycle_broken() const
   {
     return sign_rule;
   }
 
   template <int dim>
   std::string
-  PenaltyStrategy<dim>::failure_hint() const
+  PenaltyFormulation<dim>::failure_hint() const
   {
     return " is Contact/Penalty parameter too small?";
   }
 
   template <int dim>
   std::string
-  PenaltyStrategy<dim>::stall_hint() const
+  PenaltyFormulation<dim>::stall_hint() const
   {
     return "the round-off of a stiff penalty: is Contact/Penalty parameter "
            "too small? ";
@@ -193,21 +166,12 @@ namespace signorini
 
   template <int dim>
   void
-  PenaltyStrategy<dim>::report(StatisticsRow &row, ConditionalOStream &) const
+  PenaltyFormulation<dim>::report(StatisticsRow &row,
+                                  ConditionalOStream &) const
   {
     row.add("penalty_parameter", epsilon);
   }
 
-  template void
-  add_penalty_springs(const ContactSurface<2> &,
-                      const double,
-                      const std::vector<double> &,
-                      ContactLinearisation<2> &);
-  template void
-  add_penalty_springs(const ContactSurface<3> &,
-                      const double,
-                      const std::vector<double> &,
-                      ContactLinearisation<3> &);
-  template class PenaltyStrategy<2>;
-  template class PenaltyStrategy<3>;
+  template class PenaltyFormulation<2>;
+  template class PenaltyFormulation<3>;
 } // namespace signorini

@@ -1,9 +1,8 @@
-#ifndef signorini_contact_penalty_strategy_h
-#define signorini_contact_penalty_strategy_h
+#ifndef signorini_contact_penalty_formulation_h
+#define signorini_contact_penalty_formulation_h
 
-#include <signorini/contact/contact_strategy.h>
+#include <signorini/contact/contact_formulation.h>
 
-#include <vector>
 
 namespace signorini
 {
@@ -15,31 +14,22 @@ namespace signorini
                      const double             minimal_cell_diameter,
                      const double             young_modulus);
 
-  /** Springs of stiffness m / @p epsilon on the owned active nodes of
-   * @p surface, with the extra force m lambda_i of @p multipliers (if not
-   * empty; indexed like the nodes). */
-  template <int dim>
-  void
-  add_penalty_springs(const ContactSurface<dim> &surface,
-                      const double               epsilon,
-                      const std::vector<double> &multipliers,
-                      ContactLinearisation<dim> &linearisation);
-
   /**
    * Contact/Method = penalty: the contact pressure is p = [penetration]_+ /
    * epsilon, the obstacle a Winkler layer of compliance epsilon [mm/MPa];
-   * the penetration is epsilon times the local pressure. Active nodes
-   * (penetrating ones) get a spring of stiffness m / epsilon. Remedies:
+   * the penetration is epsilon times the local pressure. The law's
+   * conditions on the nodes in contact (penetrating ones) become springs of
+   * stiffness m / epsilon (condition_enforcement::add_springs). Remedies:
    * cycle breaking (every negative gap counts as penetrating), then penalty
    * continuation from a 1000 times softer penalty.
    */
   template <int dim>
-  class PenaltyStrategy : public ContactStrategy<dim>
+  class PenaltyFormulation : public ContactFormulation<dim>
   {
   public:
-    PenaltyStrategy(const ContactParameters    &parameters,
-                    const double                young_modulus,
-                    dealii::ConditionalOStream &pcout);
+    PenaltyFormulation(const ContactParameters    &parameters,
+                       const double                young_modulus,
+                       dealii::ConditionalOStream &pcout);
 
     std::string
     name() const override;
@@ -47,22 +37,22 @@ namespace signorini
     void
     solve(NewtonDriver<dim> &newton, const unsigned int cycle) override;
 
-    bool
-    update_rule(const unsigned int      i,
-                const ContactNode<dim> &node,
-                const double            gap,
-                const double            pressure) const override;
+    double
+    state_pressure(const unsigned int      i,
+                   const ContactNode<dim> &node,
+                   const double            gap,
+                   const double            pressure) const override;
+
+    double
+    residual_pressure(const unsigned int      i,
+                      const ContactNode<dim> &node,
+                      const double            gap,
+                      const double            pressure) const override;
 
     void
     linearise(const ContactSurface<dim> &surface,
-              ContactLinearisation<dim> &linearisation) const override;
-
-    double
-    complementarity_force(const unsigned int      i,
-                          const ContactNode<dim> &node,
-                          const double            force,
-                          const double            pressure,
-                          const double            gap) const override;
+              const ContactLaw<dim>     &law,
+              SystemAdditions<dim>      &additions) const override;
 
     std::string
     break_cycle() override;

@@ -1,0 +1,211 @@
+#include <deal.II/lac/full_matrix.h>
+
+#include <signorini/contact/condition_enforcement.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace signorini
+{
+  namespace condition_enforcement
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /** d.u = value solved for component c: one line. */
+      template <int dim>
+      void
+      add_line(const ContactNode<dim>   &node,
+               const NodeCondition<dim> &condition,
+               SystemAdditions<dim>     &additions)
+      {
+        const unsigned int along = condition.component;
+        const double       d     = condition.direction[along];
+        typename SystemAdditions<dim>::ConstraintLine line;
+        line.dof = node.dofs[along];
+        for (unsigned int k = 0; k < dim; ++k)
+          if (k != along && condition.direction[k] != 0.)
+            line.entries.emplace_back(node.dofs[k],
+                                      -condition.direction[k] / d);
+        line.inhomogeneity = condition.value / d;
+        additions.constraints.push_back(std::move(line));
+      }
+
+      /** D_S u_S + D_F u_F = values for the m conditions of one vertex:
+       * u_S on the m free components S with the largest |det D_S|, the
+       * others F. */
+      template <int dim>
+      void
+      add_lines(const ContactNode<dim>                &first,
+                const std::vector<NodeCondition<dim>> &conditions,
+                SystemAdditions<dim>                  &additions)
+      {
+        const unsigned int        m = conditions.size();
+        std::vector<unsigned int> best, columns;
+        double                    best_det = 0.;
+        const auto choose = [&](const auto &self, const unsigned int from) {
+          if (columns.size() == m)
+            {
+              FullMatrix<double> a(m, m);
+              for (unsigned int i = 0; i < m; ++i)
+                for (unsigned int j = 0; j < m; ++j)
+                  a(i, j) = conditions[i].direction[columns[j]];
+              const double det = std::abs(a.determinant());
+              if (det > best_det)
+                {
+                  best_det = det;
+                  best     = columns;
+                }
+              return;
+            }
+          for (unsigned int d = from; d < dim; ++d)
+            if (first.free[d])
+              {
+                columns.push_back(d);
+                self(self, d + 1);
+                columns.pop_back();
+              }
+        };
+        choose(choose, 0);
+        if (best.size() != m)
+          return; // cannot happen: a corner's normals are independent
+        FullMatrix<double> a(m, m);
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            a(i, j) = conditions[i].direction[best[j]];
+        a.gauss_jordan();
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            typename SystemAdditions<dim>::ConstraintLine line;
+            line.dof = first.dofs[best[j]];
+            for (unsigned int i = 0; i < m; ++i)
+              line.inhomogeneity += a(j, i) * conditions[i].value;
+            for (unsigned int d = 0; d < dim; ++d)
+              if (std::find(best.begin(), best.end(), d) == best.end())
+                {
+                  double weight = 0.;
+                  for (unsigned int i = 0; i < m; ++i)
+                    weight -= a(j, i) * conditions[i].direction[d];
+                  if (weight != 0.)
+                    line.entries.emplace_back(first.dofs[d], weight);
+                }
+            additions.constraints.push_back(std::move(line));
+          }
+      }
+    } // namespace
+
+    template <int dim>
+    void
+    add_constraints(const ContactSurface<dim> &surface,
+                    const ContactLaw<dim>     &law,
+                    SystemAdditions<dim>      &additions)
+    {
+      // A node with one condition alone on its vertex: one line; the
+      // conditions of a corner's nodes (and several of one node) together,
+      // after the others.
+      std::map<unsigned int, std::vector<NodeCondition<dim>>> corners;
+      std::map<unsigned int, unsigned int>                    corner_node;
+      std::vector<NodeCondition<dim>>                         conditions;
+      const auto &nodes = surface.nodes();
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          const auto &node = nodes[i];
+          conditions.clear();
+          law.conditions(node, conditions);
+          if (conditions.empty())
+            continue;
+          if (node.corner == numbers::invalid_unsigned_int &&
+              conditions.size() == 1)
+            add_line(node, conditions.front(), additions);
+          else
+            {
+              // A node's own group sits after every corner's.
+              const unsigned int group =
+                node.corner != numbers::invalid_unsigned_int ?
+                  node.corner :
+                  surface.corners().size() + i;
+              corners[group].insert(corners[group].end(),
+                                    conditions.begin(),
+                                    conditions.end());
+              corner_node.emplace(group, i);
+            }
+          if (node.owned)
+            for (const auto &condition : conditions)
+              additions.constraint_springs.push_back(
+                {node.dofs, condition.direction, node.scalar_dof});
+        }
+      for (const auto &[group, group_conditions] : corners)
+        add_lines(nodes[corner_node.at(group)], group_conditions, additions);
+    }
+
+    template <int dim>
+    void
+    add_springs(const ContactSurface<dim> &surface,
+                const ContactLaw<dim>     &law,
+                const double               epsilon,
+                const std::vector<double> &multipliers,
+                SystemAdditions<dim>      &additions)
+    {
+      // The spring's force (k (value - d.u)) d, k = m / epsilon: at a
+      // normal condition n.u = -gap, the obstacle's push -(k n.u + m gap /
+      // epsilon) n on a penetrating node; the augmented Lagrangian adds
+      // the multiplier's m lambda n.
+      std::vector<NodeCondition<dim>> conditions;
+      const auto                     &nodes = surface.nodes();
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        if (nodes[i].owned)
+          {
+            const auto &node = nodes[i];
+            conditions.clear();
+            law.conditions(node, conditions);
+            const double stiffness = node.mass / epsilon;
+            for (unsigned int c = 0; c < conditions.size(); ++c)
+              {
+                const auto  &d = conditions[c].direction;
+                const double rest =
+                  -(node.mass * conditions[c].value) / epsilon;
+                typename SystemAdditions<dim>::Block block;
+                block.rows    = node.dofs;
+                block.columns = node.dofs;
+                for (unsigned int a = 0; a < dim; ++a)
+                  {
+                    for (unsigned int b = 0; b < dim; ++b)
+                      block.matrix[a][b] = stiffness * d[a] * d[b];
+                    block.rhs[a] = -(rest * d[a]);
+                  }
+                additions.blocks.push_back(block);
+                if (c == 0 && !multipliers.empty())
+                  for (unsigned int a = 0; a < dim; ++a)
+                    if (d[a] != 0. && node.free[a])
+                      additions.forces.push_back(
+                        {node.dofs[a], node.mass * multipliers[i] * d[a]});
+              }
+          }
+      additions.has_blocks = true;
+      additions.has_forces = !multipliers.empty();
+    }
+
+    template void
+    add_constraints(const ContactSurface<2> &,
+                    const ContactLaw<2> &,
+                    SystemAdditions<2> &);
+    template void
+    add_constraints(const ContactSurface<3> &,
+                    const ContactLaw<3> &,
+                    SystemAdditions<3> &);
+    template void
+    add_springs(const ContactSurface<2> &,
+                const ContactLaw<2> &,
+                const double,
+                const std::vector<double> &,
+                SystemAdditions<2> &);
+    template void
+    add_springs(const ContactSurface<3> &,
+                const ContactLaw<3> &,
+                const double,
+                const std::vector<double> &,
+                SystemAdditions<3> &);
+  } // namespace condition_enforcement
+} // namespace signorini
