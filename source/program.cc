@@ -6,9 +6,9 @@
 #include <signorini/base/interruption.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parameter_file.h>
-#include <signorini/input/parameters.h>
 #include <signorini/input/text_check.h>
 #include <signorini/problem/contact_problem.h>
+#include <signorini/problem/parameters.h>
 #include <signorini/program.h>
 
 #include <cerrno>

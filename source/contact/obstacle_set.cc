@@ -184,14 +184,10 @@ namespace signorini
   }
 
   template <int dim>
-  void
-  ObstacleSet<dim>::write_vtu(std::ostream           &out,
-                              const BoundingBox<dim> &box) const
+  const std::vector<unsigned int> &
+  ObstacleSet<dim>::obstacle_numbers() const
   {
-    std::vector<SurfaceMesh<dim>> meshes;
-    for (unsigned int k = 0; k < obstacles.size(); ++k)
-      meshes.push_back(moved_surface(k, box));
-    write_surfaces_vtu(out, meshes, numbers);
+    return numbers;
   }
 
   template <int dim>

@@ -13,7 +13,6 @@
 #include <signorini/discretisation/vertex_values.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
-#include <signorini/mesh_adaptation/mesh_adaptation.h>
 
 #include <algorithm>
 #include <cstring>
@@ -25,12 +24,12 @@ namespace signorini
   template <int dim>
   Discretisation<dim>::Discretisation(
     const Geometry<dim>           &geometry,
-    const Refinement              &refinement,
+    const AdaptationFactory       &adaptation,
     const BoundaryConditions<dim> &boundary_conditions,
     const MPI_Comm                 mpi_communicator,
     const bool                     axisymmetric)
     : geometry(geometry)
-    , refinement(refinement)
+    , adaptation_factory(adaptation)
     , boundary_conditions(boundary_conditions)
     , communicator(mpi_communicator)
     , axisymmetric_model(axisymmetric)
@@ -77,9 +76,8 @@ namespace signorini
                                       geometry,
                                       axisymmetry::axis_tolerance(diagonal));
 
-    mesh_adaptation =
-      create_mesh_adaptation(geometry, refinement, simplex_cells, communicator);
-    mesh = mesh_adaptation->create_mesh(coarse_mesh);
+    mesh_adaptation = adaptation_factory(simplex_cells);
+    mesh            = mesh_adaptation->create_mesh(coarse_mesh);
 
     const ReferenceCell cell_type = mesh->get_reference_cells()[0];
     if (simplex_cells)

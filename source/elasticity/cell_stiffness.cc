@@ -1,7 +1,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <signorini/elasticity/axisymmetry.h>
+#include <signorini/discretisation/axisymmetry.h>
 #include <signorini/elasticity/cell_stiffness.h>
 
 namespace signorini

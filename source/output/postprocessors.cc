@@ -1,6 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <signorini/elasticity/axisymmetry.h>
+#include <signorini/discretisation/axisymmetry.h>
 #include <signorini/output/postprocessors.h>
 
 #include <cmath>

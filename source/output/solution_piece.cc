@@ -3,7 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
-#include <signorini/elasticity/axisymmetry.h>
+#include <signorini/discretisation/axisymmetry.h>
 #include <signorini/output/solution_piece.h>
 
 #include <optional>

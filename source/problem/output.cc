@@ -4,6 +4,7 @@
 
 #include <signorini/output/contact_pressure_table.h>
 #include <signorini/output/file_output.h>
+#include <signorini/output/obstacle_output.h>
 #include <signorini/output/postprocessors.h>
 #include <signorini/output/solution_piece.h>
 #include <signorini/postprocessing/balance.h>
@@ -45,7 +46,7 @@ namespace signorini
           vertices.push_back(mesh.get_vertices()[v]);
       const BoundingBox<dim> box(vertices);
       write_atomically(directory + "/obstacle.vtu", [&](std::ostream &out) {
-        obstacle->write_vtu(out, box);
+        write_obstacles_vtu(out, *obstacle, box);
       });
     });
   }

@@ -4,7 +4,7 @@
 #include <signorini/base/interruption.h>
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
-#include <signorini/elasticity/axisymmetry.h>
+#include <signorini/discretisation/axisymmetry.h>
 #include <signorini/elasticity/rigid_motions.h>
 #include <signorini/mesh_adaptation/kelly_indicator.h>
 #include <signorini/problem/contact_problem.h>

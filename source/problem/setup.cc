@@ -1,5 +1,6 @@
 #include <signorini/contact/newton_driver.h>
 #include <signorini/elasticity/elastic_operator.h>
+#include <signorini/mesh_adaptation/mesh_adaptation_factory.h>
 #include <signorini/problem/contact_problem.h>
 
 namespace signorini
@@ -18,7 +19,9 @@ namespace signorini
                                               TimerOutput::never,
             TimerOutput::wall_times)
     , discretisation(parameters.geometry,
-                     parameters.refinement,
+                     mesh_adaptation_factory(parameters.geometry,
+                                             parameters.refinement,
+                                             mpi_communicator),
                      parameters.boundary_conditions,
                      mpi_communicator,
                      parameters.material.axisymmetric())

@@ -27,13 +27,14 @@
 
 #include <signorini/contact/contact_surface.h>
 #include <signorini/contact/obstacle_set.h>
+#include <signorini/discretisation/axisymmetry.h>
 #include <signorini/discretisation/discretisation.h>
-#include <signorini/elasticity/axisymmetry.h>
 #include <signorini/elasticity/cell_stiffness.h>
 #include <signorini/elasticity/loads.h>
 #include <signorini/input/input_error.h>
-#include <signorini/input/parameters.h>
+#include <signorini/mesh_adaptation/mesh_adaptation_factory.h>
 #include <signorini/postprocessing/balance.h>
+#include <signorini/problem/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -336,12 +337,14 @@ namespace
                                   "end\n" +
                                   extra);
       parameters.parse_parameters(prm, {});
-      discretisation =
-        std::make_unique<Discretisation<2>>(parameters.geometry,
-                                            parameters.refinement,
-                                            parameters.boundary_conditions,
-                                            MPI_COMM_WORLD,
-                                            parameters.material.axisymmetric());
+      discretisation = std::make_unique<Discretisation<2>>(
+        parameters.geometry,
+        mesh_adaptation_factory(parameters.geometry,
+                                parameters.refinement,
+                                MPI_COMM_WORLD),
+        parameters.boundary_conditions,
+        MPI_COMM_WORLD,
+        parameters.material.axisymmetric());
       std::set<types::boundary_id> dirichlet_ids;
       for (const auto &[id, mask] : parameters.boundary_conditions.dirichlet)
         dirichlet_ids.insert(id);

@@ -27,6 +27,7 @@
 #include <deal.II/base/timer.h>
 
 #include <signorini/base/failures.h>
+#include <signorini/base/statistics_row.h>
 #include <signorini/contact/contact_formulation.h>
 #include <signorini/contact/contact_law.h>
 #include <signorini/contact/contact_surface.h>
@@ -35,8 +36,8 @@
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/assembled_operator.h>
 #include <signorini/elasticity/loads.h>
-#include <signorini/input/parameters.h>
-#include <signorini/output/run_record.h>
+#include <signorini/mesh_adaptation/mesh_adaptation_factory.h>
+#include <signorini/problem/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -110,11 +111,13 @@ namespace
       prm.parse_input_from_string(text);
       parameters.parse_parameters(prm, {});
       const MPI_Comm comm = MPI_COMM_WORLD;
-      discretisation =
-        std::make_unique<Discretisation<2>>(parameters.geometry,
-                                            parameters.refinement,
-                                            parameters.boundary_conditions,
-                                            comm);
+      discretisation      = std::make_unique<Discretisation<2>>(
+        parameters.geometry,
+        mesh_adaptation_factory(parameters.geometry,
+                                parameters.refinement,
+                                comm),
+        parameters.boundary_conditions,
+        comm);
       loads = std::make_unique<Loads<2>>(parameters.boundary_conditions,
                                          *discretisation);
       elastic_operator =

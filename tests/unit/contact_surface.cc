@@ -15,7 +15,8 @@
 #include <signorini/contact/contact_surface.h>
 #include <signorini/contact/obstacle_set.h>
 #include <signorini/discretisation/discretisation.h>
-#include <signorini/input/parameters.h>
+#include <signorini/mesh_adaptation/mesh_adaptation_factory.h>
+#include <signorini/problem/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,11 +70,13 @@ namespace
       declare_parameters(prm, dim);
       prm.parse_input_from_string(text);
       parameters.parse_parameters(prm, {});
-      discretisation =
-        std::make_unique<Discretisation<dim>>(parameters.geometry,
-                                              parameters.refinement,
-                                              parameters.boundary_conditions,
-                                              MPI_COMM_WORLD);
+      discretisation = std::make_unique<Discretisation<dim>>(
+        parameters.geometry,
+        mesh_adaptation_factory(parameters.geometry,
+                                parameters.refinement,
+                                MPI_COMM_WORLD),
+        parameters.boundary_conditions,
+        MPI_COMM_WORLD);
       std::set<types::boundary_id> dirichlet_ids;
       for (const auto &[id, mask] : parameters.boundary_conditions.dirichlet)
         dirichlet_ids.insert(id);

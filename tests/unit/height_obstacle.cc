@@ -12,6 +12,7 @@
 
 #include <signorini/contact/height_obstacle.h>
 #include <signorini/contact/obstacle_set.h>
+#include <signorini/output/obstacle_output.h>
 
 #include "vtu_arrays.h"
 #include <algorithm>
@@ -135,7 +136,7 @@ namespace
             const unsigned int         expected_cells)
   {
     std::ostringstream out;
-    obstacle.write_vtu(out, box);
+    write_obstacle_vtu(out, obstacle, box);
     const std::string  xml   = out.str();
     const std::size_t  piece = xml.find("<Piece");
     const unsigned int n_points =

@@ -23,7 +23,7 @@
 #include <deal.II/numerics/error_estimator.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <signorini/elasticity/axisymmetry.h>
+#include <signorini/discretisation/axisymmetry.h>
 #include <signorini/mesh_adaptation/kelly_indicator.h>
 
 #include "checks.h"

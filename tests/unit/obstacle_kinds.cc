@@ -18,6 +18,7 @@
 #include <signorini/contact/plane_obstacle.h>
 #include <signorini/contact/punch_obstacle.h>
 #include <signorini/contact/sphere_obstacle.h>
+#include <signorini/output/obstacle_output.h>
 
 #include <cmath>
 #include <fstream>
@@ -230,7 +231,9 @@ namespace
               << faced << '\n';
     report("wrong facing", faced == 0 ? 0. : 1., 0.);
     std::ostringstream vtu;
-    set->write_vtu(vtu, BoundingBox<2>({Point<2>(0, 0), Point<2>(1, 1)}));
+    write_obstacles_vtu(vtu,
+                        *set,
+                        BoundingBox<2>({Point<2>(0, 0), Point<2>(1, 1)}));
     std::cout << "  write_vtu: "
               << (vtu.str().find("Name=\"obstacle\"") != std::string::npos ?
                     "a point field named obstacle" :

@@ -3,11 +3,11 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <signorini/base/statistics_row.h>
 #include <signorini/contact/contact_law.h>
 #include <signorini/contact/contact_parameters.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/elasticity/system_additions.h>
-#include <signorini/output/run_record.h>
 
 #include <memory>
 #include <string>

@@ -76,22 +76,8 @@ namespace signorini
      * ParaView. */
     virtual SurfaceMesh<dim>
     surface(const dealii::BoundingBox<dim> &box) const = 0;
-
-    /** Writes surface(@p box) as a VTU file. */
-    virtual void
-    write_vtu(std::ostream &out, const dealii::BoundingBox<dim> &box) const;
   };
 
-  /**
-   * Writes the surfaces @p meshes as one VTU file (zlib-compressed, each
-   * cell with points of its own), with the point field `obstacle` holding
-   * each surface's entry of @p numbers.
-   */
-  template <int dim>
-  void
-  write_surfaces_vtu(std::ostream                        &out,
-                     const std::vector<SurfaceMesh<dim>> &meshes,
-                     const std::vector<unsigned int>     &numbers);
 
 } // namespace signorini
 

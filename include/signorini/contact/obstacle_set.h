@@ -90,18 +90,16 @@ namespace signorini
     SurfaceMesh<dim>
     surface(const dealii::BoundingBox<dim> &box) const override;
 
-    /** The obstacles' surfaces in one VTU file, with their numbers as the
-     * point field `obstacle`. */
-    void
-    write_vtu(std::ostream                   &out,
-              const dealii::BoundingBox<dim> &box) const override;
-
-  private:
-    /** Obstacle @p k's surface, moved. */
+    /** Obstacle @p k's surface around @p box, moved. */
     SurfaceMesh<dim>
     moved_surface(const unsigned int              k,
                   const dealii::BoundingBox<dim> &box) const;
 
+    /** Each obstacle's number (1 for `Obstacle`, 2 for `Obstacle 2`, ...). */
+    const std::vector<unsigned int> &
+    obstacle_numbers() const;
+
+  private:
     std::vector<std::unique_ptr<Obstacle<dim>>> obstacles;
     std::vector<dealii::Tensor<1, dim>>         displacements;
     std::vector<unsigned int>                   numbers;

@@ -13,11 +13,12 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <signorini/discretisation/axisymmetry.h>
+#include <signorini/discretisation/boundary_conditions.h>
 #include <signorini/discretisation/geometry.h>
-#include <signorini/elasticity/axisymmetry.h>
-#include <signorini/elasticity/boundary_conditions.h>
-#include <signorini/mesh_adaptation/refinement_parameters.h>
+#include <signorini/discretisation/mesh_adaptation.h>
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -26,9 +27,6 @@
 
 namespace signorini
 {
-  template <int dim>
-  class MeshAdaptation;
-
   /**
    * The discretisation of the body: its mesh (and where each cycle's mesh
    * comes from), the finite element (Q1 on quadrilaterals/hexahedra, P1 on
@@ -46,8 +44,14 @@ namespace signorini
 
     /** @p axisymmetric: the mesh is the (r, z) half-plane of a body of
      * revolution (see elasticity/axisymmetry.h). */
+    /** Makes the mesh adaptation once the cell type is known: the
+     * argument is whether the cells are simplices. */
+    using AdaptationFactory =
+      std::function<std::unique_ptr<MeshAdaptation<dim>>(const bool)>;
+
+    /** @p adaptation: see AdaptationFactory (mesh_adaptation_factory()). */
     Discretisation(const Geometry<dim>           &geometry,
-                   const Refinement              &refinement,
+                   const AdaptationFactory       &adaptation,
                    const BoundaryConditions<dim> &boundary_conditions,
                    const MPI_Comm                 mpi_communicator,
                    const bool                     axisymmetric = false);
@@ -182,7 +186,7 @@ namespace signorini
     setup_dofs();
 
     const Geometry<dim>           &geometry;
-    const Refinement              &refinement;
+    const AdaptationFactory        adaptation_factory;
     const BoundaryConditions<dim> &boundary_conditions;
     MPI_Comm                       communicator;
     const bool                     axisymmetric_model;

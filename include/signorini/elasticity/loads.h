@@ -7,8 +7,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <signorini/discretisation/boundary_conditions.h>
 #include <signorini/discretisation/discretisation.h>
-#include <signorini/elasticity/boundary_conditions.h>
 
 #include <memory>
 

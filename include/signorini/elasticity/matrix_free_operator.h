@@ -6,8 +6,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <signorini/discretisation/boundary_conditions.h>
 #include <signorini/discretisation/discretisation.h>
-#include <signorini/elasticity/boundary_conditions.h>
 #include <signorini/elasticity/elastic_level_operator.h>
 #include <signorini/elasticity/elastic_multigrid.h>
 #include <signorini/elasticity/elastic_operator.h>

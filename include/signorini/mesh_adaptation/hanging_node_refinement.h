@@ -1,7 +1,9 @@
 #ifndef signorini_mesh_adaptation_hanging_node_refinement_h
 #define signorini_mesh_adaptation_hanging_node_refinement_h
 
-#include <signorini/mesh_adaptation/mesh_adaptation.h>
+#include <signorini/discretisation/geometry.h>
+#include <signorini/discretisation/mesh_adaptation.h>
+#include <signorini/mesh_adaptation/refinement_parameters.h>
 
 namespace signorini
 {

@@ -4,9 +4,9 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <signorini/base/statistics_row.h>
 #include <signorini/contact/contact_surface.h>
 #include <signorini/discretisation/discretisation.h>
-#include <signorini/output/run_record.h>
 #include <signorini/postprocessing/reference.h>
 
 #include <vector>

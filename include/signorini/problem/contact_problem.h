@@ -15,10 +15,10 @@
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/elastic_operator.h>
 #include <signorini/elasticity/loads.h>
-#include <signorini/input/parameters.h>
 #include <signorini/output/background_writer.h>
 #include <signorini/output/checkpoint.h>
 #include <signorini/output/run_record.h>
+#include <signorini/problem/parameters.h>
 
 #include <memory>
 #include <optional>

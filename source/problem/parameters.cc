@@ -1,6 +1,6 @@
 #include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
-#include <signorini/input/parameters.h>
+#include <signorini/problem/parameters.h>
 
 #include <sstream>
 

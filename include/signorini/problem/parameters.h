@@ -1,12 +1,12 @@
-#ifndef signorini_input_parameters_h
-#define signorini_input_parameters_h
+#ifndef signorini_problem_parameters_h
+#define signorini_problem_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/contact/contact_parameters.h>
 #include <signorini/contact/obstacle.h>
+#include <signorini/discretisation/boundary_conditions.h>
 #include <signorini/discretisation/geometry.h>
-#include <signorini/elasticity/boundary_conditions.h>
 #include <signorini/elasticity/linear_solver_parameters.h>
 #include <signorini/elasticity/material.h>
 #include <signorini/input/parameter_file.h>

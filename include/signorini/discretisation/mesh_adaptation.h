@@ -1,14 +1,10 @@
-#ifndef signorini_mesh_adaptation_mesh_adaptation_h
-#define signorini_mesh_adaptation_mesh_adaptation_h
+#ifndef signorini_discretisation_mesh_adaptation_h
+#define signorini_discretisation_mesh_adaptation_h
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
-
-#include <signorini/discretisation/geometry.h>
-#include <signorini/mesh_adaptation/refinement_parameters.h>
 
 #include <functional>
 #include <memory>
@@ -32,7 +28,9 @@ namespace signorini
    *   partitioned and becomes a fully distributed triangulation. The
    *   solution is interpolated at the new vertices.
    *
-   * create_mesh_adaptation() chooses by the cell type.
+   * create_mesh_adaptation() (mesh_adaptation/mesh_adaptation_factory.h)
+   * chooses by the cell type; the Discretisation calls the factory it is
+   * given once it knows the cell type.
    */
   template <int dim>
   class MeshAdaptation
@@ -64,15 +62,6 @@ namespace signorini
           const std::vector<const VectorType *>       &vectors) = 0;
   };
 
-  /** The adaptation for a mesh of @p simplex cells (else quadrilaterals or
-   * hexahedra); throws an InputError for a combination that cannot be
-   * adapted (kelly cycles on a simplex mesh without a .geo). */
-  template <int dim>
-  std::unique_ptr<MeshAdaptation<dim>>
-  create_mesh_adaptation(const Geometry<dim> &geometry,
-                         const Refinement    &refinement,
-                         const bool           simplex,
-                         const MPI_Comm       comm);
 } // namespace signorini
 
 #endif

@@ -1,5 +1,5 @@
-#ifndef signorini_elasticity_axisymmetry_h
-#define signorini_elasticity_axisymmetry_h
+#ifndef signorini_discretisation_axisymmetry_h
+#define signorini_discretisation_axisymmetry_h
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>

@@ -1,5 +1,5 @@
 #include <signorini/base/text.h>
-#include <signorini/elasticity/axisymmetry.h>
+#include <signorini/discretisation/axisymmetry.h>
 #include <signorini/input/input_error.h>
 
 namespace signorini

@@ -1,5 +1,5 @@
-#ifndef signorini_elasticity_boundary_conditions_h
-#define signorini_elasticity_boundary_conditions_h
+#ifndef signorini_discretisation_boundary_conditions_h
+#define signorini_discretisation_boundary_conditions_h
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>

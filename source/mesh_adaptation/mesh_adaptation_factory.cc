@@ -1,7 +1,7 @@
 #include <signorini/input/input_error.h>
 #include <signorini/mesh_adaptation/gmsh_remeshing.h>
 #include <signorini/mesh_adaptation/hanging_node_refinement.h>
-#include <signorini/mesh_adaptation/mesh_adaptation.h>
+#include <signorini/mesh_adaptation/mesh_adaptation_factory.h>
 
 namespace signorini
 {

@@ -1,4 +1,4 @@
-#include <signorini/elasticity/boundary_conditions.h>
+#include <signorini/discretisation/boundary_conditions.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
 
