@@ -13,14 +13,14 @@ step-42 (built from the documentation package, made elastic) against it on
 two processes, every shipped scene for its output share, and the 2D Hertz
 scene at more than 200k dofs on one and two processes.
 
-Prints the tables and rewrites the README's sections between
+Prints the tables and rewrites the sections of doc/performance.md between
 <!-- begin benchmark --> and <!-- end benchmark --> (and benchmark-3d).
 Runs go to build/benchmark/.
 
 For the test suite only: with SIGNORINI_SMOKE=FOLDER (see scripts/common.py)
 every run has at most two cycles, the default is one repeat, each table
 but the 2D Hertz line measures its first case only, step-42 is neither built
-nor run, and the README rewritten is FOLDER/README.md, a copy.
+nor run, and the page rewritten is FOLDER/doc/performance.md, a copy.
 """
 import os
 import re
@@ -241,7 +241,8 @@ def with_overrides(base, extra):
 
 
 def three_d(repeat):
-    """The 3D and parallel figures; returns the README section."""
+    """The 3D and parallel figures; returns the section of
+    doc/performance.md."""
     rows = []
     cases = CASES_3D[:2] if common.SMOKE else CASES_3D
     # A scene's cases (both operators, one and two processes) in turn.
@@ -427,11 +428,12 @@ def main():
         sections["benchmark-3d"] = three_d(repeat)
     if "2d" in parts:
         sections["benchmark"] = two_d(repeat)
-    common.replace_sections(common.output_file("README.md"), sections)
+    common.replace_sections(common.output_file("doc/performance.md"),
+                            sections)
 
 
 def two_d(repeat):
-    """The 2D benchmarks; returns the README section."""
+    """The 2D benchmarks; returns the section of doc/performance.md."""
     header = ["cycle", "dofs", "iterations", "contact solve [s]",
               "linear solve [s]", "ratio", "peak memory [MB]"]
     finals = []

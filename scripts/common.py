@@ -5,8 +5,8 @@ Smoke mode, for the test suite only (tests/scripts/): with the environment
 variable SIGNORINI_SMOKE=FOLDER a script builds and installs nothing, runs
 every scene on at most SMOKE_CYCLES cycles, once, on the first mesh or
 value of each sweep, puts its runs in FOLDER, and rewrites copies of the
-README and doc/ files it is documented to rewrite, in FOLDER (README.md,
-doc/NAME), instead of the tracked files. It checks that the pipeline runs
+doc/ files it is documented to rewrite, in FOLDER (doc/NAME), instead of
+the tracked files. It checks that the pipeline runs
 and touches nothing else; its numbers mean nothing."""
 import concurrent.futures
 import csv
@@ -32,7 +32,7 @@ def work_folder(name):
 
 
 def output_file(relative):
-    """The file `relative` to the repository (README.md, doc/NAME) that a
+    """The file `relative` to the repository (doc/NAME) that a
     script rewrites: itself, or in smoke mode its copy in the smoke
     folder (copied from the repository's on first use)."""
     if not SMOKE:
