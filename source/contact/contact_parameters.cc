@@ -6,29 +6,15 @@ namespace signorini
 {
   using namespace dealii;
 
-  namespace
-  {
-    const Choices<ContactParameters::Method> methods{
-      {ContactParameters::Method::active_set, "active set"},
-      {ContactParameters::Method::penalty, "penalty"},
-      {ContactParameters::Method::augmented_lagrangian, "augmented lagrangian"},
-      {ContactParameters::Method::none, "none"}};
-  } // namespace
-
   void
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
     const ContactParameters defaults;
     prm.enter_subsection("Contact");
-    prm.declare_entry(
-      "Method",
-      methods.name(defaults.method),
-      methods.pattern(),
-      "active set: exact non-penetration (primal-dual active "
-      "set); penalty: penetration = penalty parameter x contact "
-      "pressure; augmented lagrangian: Uzawa updates of the contact "
-      "pressure around a penalty, each solved by Newton, converging to the "
-      "exact non-penetration; none: no contact.");
+    prm.declare_entry("Method",
+                      methods().name(defaults.method),
+                      methods().pattern(),
+                      methods().documentation());
     prm.declare_entry(
       "Penalty parameter",
       entry_text::of(defaults.penalty_parameter),
@@ -91,7 +77,7 @@ namespace signorini
   ContactParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    method               = methods.value(prm.get("Method"), "Contact/Method");
+    method               = methods().value(prm.get("Method"), "Contact/Method");
     penalty_parameter    = prm.get_double("Penalty parameter");
     multiplier_tolerance = prm.get_double("Multiplier tolerance");
     max_updates          = prm.get_integer("Maximum updates");

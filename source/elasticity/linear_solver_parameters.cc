@@ -8,37 +8,15 @@ namespace signorini
 {
   using namespace dealii;
 
-  namespace
-  {
-    const Choices<LinearSolverParameters::Type> solver_types{
-      {LinearSolverParameters::Type::automatic, "automatic"},
-      {LinearSolverParameters::Type::direct, "direct"},
-      {LinearSolverParameters::Type::amg_cg, "amg cg"},
-      {LinearSolverParameters::Type::matrix_free, "matrix-free"}};
-  } // namespace
-
   void
   LinearSolverParameters::declare_parameters(ParameterHandler &prm)
   {
     const LinearSolverParameters defaults;
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Type",
-                      solver_types.name(defaults.type),
-                      solver_types.pattern(),
-                      "direct: sparse LU (Trilinos Amesos MUMPS); amg cg: "
-                      "conjugate gradients with algebraic multigrid (Trilinos "
-                      "ML); automatic: matrix-free on hexahedra in 3D (at "
-                      "least half of them parallelepipeds with flat "
-                      "manifolds, the volumetric strain at every point), "
-                      "else direct in 2D "
-                      "on one process below 100,000 dofs and amg cg above, "
-                      "in 3D and on several processes, the faster choices "
-                      "as measured (see README); matrix-free: no matrix, the "
-                      "elastic operator evaluated cell by cell and CG with "
-                      "geometric multigrid (quadrilaterals and hexahedra, "
-                      "not axisymmetric, volumetric strain pointwise; "
-                      "Tolerance, Newton tolerance and Maximum iterations "
-                      "as for amg cg).");
+                      types().name(defaults.type),
+                      types().pattern(),
+                      types().documentation());
     prm.declare_entry("Tolerance",
                       entry_text::of(defaults.tolerance),
                       Patterns::Double(0.),
@@ -64,7 +42,7 @@ namespace signorini
   LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type           = solver_types.value(prm.get("Type"), "Linear solver/Type");
+    type           = types().value(prm.get("Type"), "Linear solver/Type");
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
     newton_tolerance =

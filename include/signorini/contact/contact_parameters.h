@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <signorini/input/entry_text.h>
+
 namespace signorini
 {
   /**
@@ -31,6 +33,27 @@ namespace signorini
       penalty,
       augmented_lagrangian
     };
+
+    /** Each method's name in a parameter file and what it does. A new
+     * formulation adds its value to Method, its line here, and a line in
+     * create_contact_formulation(). */
+    static const Choices<Method> &
+    methods()
+    {
+      static const Choices<Method> choices{
+        {Method::active_set,
+         "active set",
+         "exact non-penetration (primal-dual active set)"},
+        {Method::penalty,
+         "penalty",
+         "penetration = penalty parameter x contact pressure"},
+        {Method::augmented_lagrangian,
+         "augmented lagrangian",
+         "Uzawa updates of the contact pressure around a penalty, each "
+         "solved by Newton, converging to the exact non-penetration"},
+        {Method::none, "none", "no contact"}};
+      return choices;
+    }
 
     Method method = Method::active_set;
     /** epsilon [mm/MPa]; 0: h_min / (10 E) of each cycle's mesh. */

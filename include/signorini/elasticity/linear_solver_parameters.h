@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <signorini/input/entry_text.h>
+
 namespace signorini
 {
   /**
@@ -54,6 +56,35 @@ namespace signorini
      * hundredths of a second and needs no preconditioner that a penalty's
      * stiffness could spoil. */
     static constexpr dealii::types::global_dof_index direct_below = 100000;
+
+    /** Each type's name in a parameter file and what it does. A new
+     * elastic operator adds its value to Type, its line here, and a line
+     * in create_elastic_operator(). */
+    static const Choices<Type> &
+    types()
+    {
+      static const Choices<Type> choices{
+        {Type::automatic,
+         "automatic",
+         "matrix-free on hexahedra in 3D (at least half of them "
+         "parallelepipeds with flat manifolds, the volumetric strain at every "
+         "point), else direct in 2D on one process below 100,000 dofs and "
+         "amg cg above, in 3D and on several processes, the faster choices "
+         "as measured (see doc/linear-solvers.md)"},
+        {Type::direct, "direct", "sparse LU (Trilinos Amesos MUMPS)"},
+        {Type::amg_cg,
+         "amg cg",
+         "conjugate gradients with algebraic multigrid (Trilinos ML), GMRES "
+         "where the Newton system is not symmetric"},
+        {Type::matrix_free,
+         "matrix-free",
+         "no matrix, the elastic operator evaluated cell by cell and CG "
+         "(GMRES where the Newton system is not symmetric) with geometric "
+         "multigrid (quadrilaterals and hexahedra, not axisymmetric, "
+         "volumetric strain pointwise; Tolerance, Newton tolerance and "
+         "Maximum iterations as for amg cg)"}};
+      return choices;
+    }
 
     Type type = Type::automatic;
     /** amg cg: residual reduction relative to the right-hand side. */

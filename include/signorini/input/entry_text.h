@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -66,9 +67,10 @@ namespace signorini
   /**
    * The values an entry chooses from (the values of an enum, say) with
    * their names in a parameter file, in the order in which
-   * `--print-parameters` lists them. pattern() makes the entry a
-   * Patterns::Selection of the names; name() gives the default's text;
-   * value() maps the selected name back to its value.
+   * `--print-parameters` lists them, each perhaps with a description.
+   * pattern() makes the entry a Patterns::Selection of the names; name()
+   * gives the default's text; value() maps the selected name back to its
+   * value; documentation() describes every choice.
    */
   template <typename T>
   class Choices
@@ -77,6 +79,29 @@ namespace signorini
     Choices(std::initializer_list<std::pair<T, std::string>> choices)
       : choices(choices)
     {
+    }
+
+    /** Choices with their descriptions: (value, name, what it does). */
+    Choices(
+      std::initializer_list<std::tuple<T, std::string, std::string>> described)
+    {
+      for (const auto &[value, name, description] : described)
+        {
+          choices.emplace_back(value, name);
+          descriptions.push_back(description);
+        }
+    }
+
+    /** "name: description; name: description." for the choices that have
+     * a description. */
+    std::string
+    documentation() const
+    {
+      std::string text;
+      for (unsigned int i = 0; i < descriptions.size(); ++i)
+        text += (text.empty() ? "" : "; ") + choices[i].second + ": " +
+                descriptions[i];
+      return text + ".";
     }
 
     /** The Patterns::Selection of the names: "first|second|...". */
@@ -115,6 +140,7 @@ namespace signorini
 
   private:
     std::vector<std::pair<T, std::string>> choices;
+    std::vector<std::string>               descriptions;
   };
 } // namespace signorini
 
