@@ -20,9 +20,11 @@ namespace signorini
                                const TrilinosWrappers::MPI::Vector &solution,
                                const MPI_Comm mpi_communicator)
   {
-    // x, y[, z], pressure, gap, obstacle: a node at a corner has one row
-    // per obstacle it touches.
-    using Row = std::array<double, dim + 3>;
+    // x, y[, z], pressure, gap, obstacle, state, then the node's frame
+    // (normal, tangents): a node at a corner has one row per obstacle it
+    // touches.
+    constexpr unsigned int frame = dim + 4;
+    using Row                    = std::array<double, frame + dim * dim>;
     std::vector<Row> rows;
     for (const auto &node : surface.nodes())
       if (node.owned)
@@ -33,6 +35,14 @@ namespace signorini
           row[dim]     = pressure(node.scalar_dof);
           row[dim + 1] = surface.deformed_gap(node, solution);
           row[dim + 2] = surface.obstacles().number(node.obstacle);
+          row[dim + 3] = static_cast<double>(node.state);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              // (+ 0.: no negative zeros in the table)
+              row[frame + d] = node.normal[d] + 0.;
+              for (unsigned int t = 0; t < dim - 1; ++t)
+                row[frame + (t + 1) * dim + d] = node.tangents[t][d] + 0.;
+            }
           rows.push_back(row);
         }
     const auto gathered = Utilities::MPI::gather(mpi_communicator, rows);
@@ -44,16 +54,23 @@ namespace signorini
     std::sort(all.begin(), all.end());
 
     write_atomically(file, [&](std::ostream &out) {
-      out << (dim == 2 ? "x,y" : "x,y,z") << ",pressure,gap,obstacle\n";
-      char number[32];
+      out << (dim == 2 ? "x,y" : "x,y,z") << ",pressure,gap,obstacle,state"
+          << (dim == 2 ? ",n_x,n_y,t_x,t_y" :
+                         ",n_x,n_y,n_z,t1_x,t1_y,t1_z,t2_x,t2_y,t2_z")
+          << '\n';
+      char       number[32];
+      const auto write = [&](const double value, const char separator) {
+        std::snprintf(number, sizeof(number), "%.10e%c", value, separator);
+        out << number;
+      };
       for (const auto &row : all)
         {
           for (unsigned int c = 0; c < dim + 2; ++c)
-            {
-              std::snprintf(number, sizeof(number), "%.10e,", row[c]);
-              out << number;
-            }
-          out << static_cast<unsigned int>(row[dim + 2]) << '\n';
+            write(row[c], ',');
+          out << static_cast<unsigned int>(row[dim + 2]) << ','
+              << static_cast<unsigned int>(row[dim + 3]) << ',';
+          for (unsigned int c = frame; c < row.size(); ++c)
+            write(row[c], c + 1 < row.size() ? ',' : '\n');
         }
     });
   }

@@ -211,12 +211,13 @@ namespace signorini
     const auto &owned_dofs    = discretisation.locally_owned_dofs();
     const auto &relevant_dofs = discretisation.locally_relevant_dofs();
 
-    // The active set as a nodal vector with ghost entries (a process's
-    // cells reach contact nodes that another owns).
+    // The nodes' states (0 open, 1 closed) as a nodal vector with ghost
+    // entries (a process's cells reach contact nodes that another owns):
+    // the field active_set.
     VectorType owned_active(owned_dofs, mpi_communicator);
     for (const auto &node : contact_surface.nodes())
       if (node.owned && node.in_contact())
-        owned_active(node.scalar_dof) = 1.;
+        owned_active(node.scalar_dof) = static_cast<double>(node.state);
     owned_active.compress(VectorOperation::insert);
     VectorType active;
     active.reinit(solution); // its map, not a third one (see setup_system)

@@ -5,7 +5,9 @@
 // 3D the products of those), their sum (the contact boundary's length or
 // area), a node whose normal displacement a Dirichlet condition fixes
 // excluded (one fixed in the other component kept), active_set_signature
-// and deformed_gap for an interpolated displacement.
+// and deformed_gap for an interpolated displacement; the nodes' frames
+// (tangent_frame): orthonormal and right-handed for normals along the axes
+// and oblique ones, and t = (-n_y, n_x) in 2D.
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
@@ -19,6 +21,7 @@
 #include <signorini/problem/parameters.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -329,6 +332,50 @@ end
       [&](const Point<3> &p) { return weight(p[0]) * weight(p[1]); },
       1.);
   }
+  /** tangent_frame for normals along the axes and oblique ones: the
+   * largest defect of orthonormality (and of t_1 x t_2 = n in 3D). */
+  void
+  frames()
+  {
+    std::cout << "Frames:\n";
+    double worst = 0., rotation = 0.;
+    for (const double angle : {0., 0.3, 1.5707963267948966, 2.5, -1.})
+      {
+        Tensor<1, 2> n;
+        n[0]         = std::cos(angle);
+        n[1]         = std::sin(angle);
+        const auto t = tangent_frame(n)[0];
+        worst = std::max({worst, std::abs(n * t), std::abs(t.norm() - 1.)});
+        rotation =
+          std::max({rotation, std::abs(t[0] + n[1]), std::abs(t[1] - n[0])});
+      }
+    report("2D: max |n.t|, ||t| - 1|", worst, 1e-15);
+    report("2D: max |t - (-n_y, n_x)|", rotation, 0.);
+    worst = 0.;
+    for (const auto &direction :
+         std::vector<std::array<double, 3>>{{{0, 0, 1}},
+                                            {{0, 0, -1}},
+                                            {{1, 0, 0}},
+                                            {{0, -1, 0}},
+                                            {{1, 2, 3}},
+                                            {{-0.3, 0.1, -2}},
+                                            {{1, 1, 1e-9}}})
+      {
+        Tensor<1, 3> n;
+        for (unsigned int d = 0; d < 3; ++d)
+          n[d] = direction[d];
+        n /= n.norm();
+        const auto t = tangent_frame(n);
+        worst        = std::max({worst,
+                                 std::abs(n * t[0]),
+                                 std::abs(n * t[1]),
+                                 std::abs(t[0] * t[1]),
+                                 std::abs(t[0].norm() - 1.),
+                                 std::abs(t[1].norm() - 1.),
+                                 (cross_product_3d(t[0], t[1]) - n).norm()});
+      }
+    report("3D: max defect of orthonormality and of t1 x t2 = n", worst, 1e-15);
+  }
 } // namespace
 
 int
@@ -339,4 +386,5 @@ main(int argc, char **argv)
   rectangle_2d();
   dirichlet_2d();
   box_3d();
+  frames();
 }

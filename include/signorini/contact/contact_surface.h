@@ -66,7 +66,9 @@ namespace signorini
      * axisymmetric model]; set on owned nodes only. */
     double mass = 0.;
     bool   owned;
-    /** Open, or in contact in the way the contact law says. */
+    /** Open, or in contact in the way the contact law says (written as 0,
+     * 1, ... in the output: the field active_set, the contact pressure
+     * table). */
     NodeState state = NodeState::open;
     /** Whether this is the vertex's first node (its nearest obstacle):
      * quantities of the vertex (its nodal force) count there once. */
