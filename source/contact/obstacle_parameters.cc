@@ -70,7 +70,9 @@ namespace signorini
         "The kind of obstacle: height (the graph of Height, below the body), "
         "plane (Point, Normal), sphere (Center, Radius, Body; a circle in "
         "2D), cylinder (Center, Axis in 3D, Radius, Body; a circle in 2D), "
-        "signed distance (an expression), geometry file (the solid of a "
+        "punch (Center of its flat end, Normal from the punch towards the "
+        "body, Radius; a flat-ended punch, a strip in 2D), signed distance (an "
+        "expression), geometry file (the solid of a "
         "CAD or Gmsh file, Body)" +
           std::string(number == 1 ?
                         "." :
