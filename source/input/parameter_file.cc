@@ -129,7 +129,19 @@ namespace signorini
         throw InputError::at(where,
                              what + " names a directory, not a parameter file");
       if (!fs::is_regular_file(target, error) || !std::ifstream(target))
-        throw InputError::at(where, what + ": cannot open the file");
+        {
+          // Where it looked: include names are relative to the top file's
+          // folder, whichever file includes them.
+          const std::string looked =
+            fs::absolute(target, error).lexically_normal().string();
+          throw InputError::at(
+            where,
+            what + ": cannot open the file: " +
+              (fs::exists(target, error) ? "cannot read " : "there is no ") +
+              looked +
+              " (include names are relative to the folder of the first "
+              "parameter file)");
+        }
 
       const fs::path canonical = fs::weakly_canonical(target, error);
       for (unsigned int i = 0; i < chain.size(); ++i)
