@@ -1,7 +1,16 @@
 #!/bin/sh
-# Test driver: run_case.sh SIGNORINI FILE.prm
-# Prints the program's output, its exit status, the statistics table it wrote,
-# and the verdict of every check listed in FILE.checks (if that file exists).
+# Test driver: run_case.sh SIGNORINI FILE.prm [PROCESSES MPIEXEC]
+# Prints the program's output, its exit status, the files it wrote, the
+# statistics table it wrote, and the verdict of every check listed in
+# FILE.checks (if that file exists). With PROCESSES > 1 (an MPI variant,
+# NAME.mpirun=N.output) the program runs as `MPIEXEC PROCESSES SIGNORINI
+# FILE.prm` (MPIEXEC: the launcher and its flags up to the number, e.g.
+# `mpiexec --quiet -n`), and all of that is printed the same way.
+# Every run has a temporary folder of its own (TMPDIR), removed afterwards:
+# Open MPI keeps its session directory there, and runs that share one race
+# for it (one run removing the shared folder ompi.HOST.UID as it ends while
+# another creates its own in it: "mkdir ... File exists", "orte_init
+# failed").
 # If FILE.args exists, its words are the program's arguments instead of
 # FILE.prm (the word FILE stands for FILE.prm): a test of the command line.
 # A check line reads   ROW COLUMN OP VALUE [TOLERANCE]
@@ -11,8 +20,9 @@
 #   OP:    near (|x-VALUE| <= TOLERANCE), rnear (relative), lt, le, gt, ge;
 #          or `decreasing` / `increasing` (no VALUE): every row below /
 #          above the one before
-# Checks print PASS or FAIL, so numdiff turns a violated bound into a failing test
-# even where the bound is far tighter than numdiff's own tolerance.
+# Checks print PASS or FAIL, so the comparison (compare.py) turns a violated
+# bound into a failing test even where the bound is far tighter than the
+# comparison's own tolerance.
 # If FILE.roundoff exists, it holds a cycle K: from cycle K on, the mesh was
 # chosen by round-off (a patch test's Kelly indicators are 1e-19, and which
 # cells they refine differs between processors), so the numbers of cells and
@@ -20,13 +30,22 @@
 # the statistics; the test's checks say what must hold of them instead.
 program=$1
 prm=$2
+processes=${3:-1}
+mpiexec=${4:-mpiexec -n}
 # deal.II's test runner keeps a file `output` here: run one folder down.
 rm -rf run && mkdir run && cd run || exit 1
+TMPDIR=$(mktemp -d "${TMPDIR:-/tmp}/signorini-test.XXXXXX") || exit 1
+export TMPDIR
+trap 'rm -rf "$TMPDIR"' EXIT
+launcher=
+# shellcheck disable=SC2086 # MPIEXEC is a command and its flags
+[ "$processes" -gt 1 ] && launcher="$mpiexec $processes"
 if [ -f "${prm%.prm}.args" ]; then
-  # shellcheck disable=SC2046 # the words of the file are the arguments
-  "$program" $(sed "s|FILE|$prm|g" "${prm%.prm}.args") > run.log 2>&1
+  # shellcheck disable=SC2046,SC2086 # the words of the file are the arguments
+  $launcher "$program" $(sed "s|FILE|$prm|g" "${prm%.prm}.args") > run.log 2>&1
 else
-  "$program" "$prm" > run.log 2>&1
+  # shellcheck disable=SC2086
+  $launcher "$program" "$prm" > run.log 2>&1
 fi
 status=$?
 roundoff=-1
@@ -41,8 +60,9 @@ sed -e "s|$(dirname "$prm")/||g" \
       print "Cycle " $2 " # cells, # dofs"; next }
     { print }'
 echo "exit status: $status"
-stats=$(find output -name statistics.csv 2>/dev/null | head -n 1)
-[ -d output ] && { echo "files written:"; find output -type f | sort; }
+stats=$(find . -name statistics.csv | sort | head -n 1)
+written=$(find . -type f ! -path ./run.log | sed 's|^\./||' | LC_ALL=C sort)
+[ -n "$written" ] && { echo "files written:"; echo "$written"; }
 [ -n "$stats" ] && {
   echo "statistics.csv:"
   awk -F, -v OFS=, -v from="$roundoff" '

@@ -108,6 +108,29 @@ def snapshot(skip):
     return found
 
 
+def tracked(relative):
+    """Whether `relative` (to ROOT) is a file of the repository: tracked by
+    git, or, outside a git checkout, present and not in a folder the
+    repository ignores (.gitignore: build/, output/)."""
+    original = os.path.join(ROOT, relative)
+    if not os.path.isfile(original):
+        return False
+    try:
+        listed = subprocess.run(
+            ["git", "-C", ROOT, "ls-files", "--error-unmatch", "--",
+             relative], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+            check=False).returncode == 0
+        inside = subprocess.run(
+            ["git", "-C", ROOT, "rev-parse", "--is-inside-work-tree"],
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+            check=False).returncode == 0
+    except OSError:
+        inside = False
+    if inside:
+        return listed
+    return relative.split(os.sep)[0] not in ("build", "output")
+
+
 def main():
     arguments = sys.argv[1:]
     if "--" not in arguments or not arguments:
@@ -186,8 +209,11 @@ def main():
         written = os.path.isfile(path) and not os.path.islink(path) and \
             os.path.getsize(path) > 0
         # A rewritten copy of a repository file differs from it: the
-        # script wrote its own results there.
-        if written and os.path.isfile(original):
+        # script wrote its own results there. Only files the repository
+        # tracks are copied (README.md, doc/): a file of the user's own
+        # runs (output/, which git ignores) may hold what the script wrote,
+        # byte for byte, when the user ran the same scene before.
+        if written and tracked(relative):
             with open(path, "rb") as a, open(original, "rb") as b:
                 written = a.read() != b.read()
         print("written: %s: %s" % (relative, "yes" if written else "NO"))

@@ -4,10 +4,12 @@
 // format before checksums named as such. checksum_of_file against the
 // CRC-32 check value of "123456789" (0xcbf43926); the checksums of slices
 // of a file joined equal the whole file's. verify_pieces on pieces intact,
-// shorter, longer, changed and missing.
+// shorter, longer, changed and missing. Each is checked (PASS, or "yes"),
+// not only printed.
 
 #include <signorini/output/checkpoint_manifest.h>
 
+#include "checks.h"
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +50,8 @@ main()
               static_cast<unsigned long long>(check.size),
               check.crc,
               check.crc == 0xcbf43926u && check.size == 9 ? "PASS" : "FAIL");
+  if (check.crc != 0xcbf43926u || check.size != 9)
+    checks::failed();
 
   std::string mesh(5000, ' ');
   for (unsigned int i = 0; i < mesh.size(); ++i)
@@ -75,6 +79,8 @@ main()
                   whole.crc,
                   joined.crc == whole.crc && joined.size == 5000 ? "PASS" :
                                                                    "FAIL");
+      if (joined.crc != whole.crc || joined.size != 5000)
+        checks::failed();
     }
 
   CheckpointManifest written;
@@ -96,6 +102,8 @@ main()
     read.pieces[1].checksum.crc == written.pieces[1].checksum.crc;
   std::cout << "read back (" << text.size()
             << " bytes): " << (same ? "PASS" : "FAIL " + fault) << '\n';
+  if (!same)
+    checks::failed();
 
   std::map<std::string, unsigned int> truncations;
   for (std::size_t size = 0; size < text.size(); ++size)
@@ -104,6 +112,7 @@ main()
   for (const auto &[what, count] : truncations)
     std::cout << "  " << (what.empty() ? "ACCEPTED" : what) << ": " << count
               << '\n';
+  checks::expect("none accepted", truncations.count("") == 0);
 
   std::map<std::string, unsigned int> flips;
   for (std::size_t i = 0; i < text.size(); ++i)
@@ -117,13 +126,26 @@ main()
   for (const auto &[what, count] : flips)
     std::cout << "  " << (what.empty() ? "ACCEPTED" : what) << ": " << count
               << '\n';
+  checks::expect("none accepted", flips.count("") == 0);
 
-  std::cout << "format 1: "
-            << CheckpointManifest().read("signorini checkpoint 1\ncycle 3\n")
-            << '\n';
-  std::cout << "format 2: "
-            << CheckpointManifest().read("signorini checkpoint 2\ncycle 3\n")
-            << '\n';
+  // Older formats and other files refused, each with its own reason.
+  const auto refused = [](const std::string &label,
+                          const std::string &text,
+                          const std::string &words) {
+    const std::string fault = CheckpointManifest().read(text);
+    std::cout << label << ": " << fault << '\n';
+    if (fault.find(words) == std::string::npos)
+      {
+        std::cout << "  FAILED: not \"" << words << "\"\n";
+        checks::failed();
+      }
+  };
+  refused("format 1",
+          "signorini checkpoint 1\ncycle 3\n",
+          "written by an earlier signorini, without checksums");
+  refused("format 2",
+          "signorini checkpoint 2\ncycle 3\n",
+          "written by an earlier signorini, which stored the solution cell");
   {
     // A whole state file of format 2: its own checksum matches.
     const std::string body =
@@ -135,23 +157,39 @@ main()
                   sizeof(crc),
                   "crc32 %08x\n",
                   checksum_of_file(directory + "/format2.txt").crc);
-    std::cout << "format 2, whole: " << CheckpointManifest().read(body + crc)
-              << '\n';
+    refused("format 2, whole",
+            body + crc,
+            "written by an earlier signorini, which stored the solution cell");
   }
-  std::cout << "other text: " << CheckpointManifest().read("hello\n") << '\n';
+  refused("other text", "hello\n", "not a signorini checkpoint");
 
+  // Each case's fault must name the piece and say what is wrong with it.
+  const auto verify = [&](const std::string &label,
+                          const std::string &piece,
+                          const std::string &words) {
+    const std::string fault = read.verify_pieces(directory);
+    std::cout << "  " << label << ": " << (fault.empty() ? "(no fault)" : fault)
+              << '\n';
+    if (words.empty() ? !fault.empty() :
+                        fault.find(directory + "/" + piece + ": " + words) ==
+                          std::string::npos)
+      {
+        std::cout << "  FAILED: not \"" << piece << ": " << words << "\"\n";
+        checks::failed();
+      }
+  };
   std::cout << "verify_pieces:\n";
-  std::cout << "  intact: \"" << read.verify_pieces(directory) << "\"\n";
+  verify("intact", "", "");
   write_file(directory + "/checkpoint-03.mesh", mesh.substr(0, 4000));
-  std::cout << "  shorter: " << read.verify_pieces(directory) << '\n';
+  verify("shorter", "checkpoint-03.mesh", "truncated (4000 of 5000 bytes)");
   write_file(directory + "/checkpoint-03.mesh", mesh + "m");
-  std::cout << "  longer: " << read.verify_pieces(directory) << '\n';
+  verify("longer", "checkpoint-03.mesh", "damaged (5001 bytes");
   std::string changed = mesh;
   changed[2500] ^= 1;
   write_file(directory + "/checkpoint-03.mesh", changed);
-  std::cout << "  changed: " << read.verify_pieces(directory) << '\n';
+  verify("changed", "checkpoint-03.mesh", "damaged");
   write_file(directory + "/checkpoint-03.mesh", mesh);
   fs::remove(directory + "/checkpoint-03.mesh.info");
-  std::cout << "  missing: " << read.verify_pieces(directory) << '\n';
+  verify("missing", "checkpoint-03.mesh.info", "missing");
   fs::remove_all(directory);
 }

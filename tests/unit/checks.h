@@ -1,5 +1,8 @@
 // What the unit tests print of their checks: a difference, and whether it
-// is within its tolerance, on the first process only.
+// is within its tolerance, or a property and whether it holds, on the first
+// process only. A check that fails also makes the program end with exit
+// status 1 (on every process where it failed), so that the test fails at
+// its run, whatever its .output says.
 #ifndef signorini_tests_unit_checks_h
 #define signorini_tests_unit_checks_h
 
@@ -7,29 +10,70 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <string>
 
 namespace checks
 {
+  /** Whether this is the first process (or the only one: a program that
+   * does not start MPI). */
   inline bool
   first_process()
   {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    int initialized = 0, finalized = 0;
+    MPI_Initialized(&initialized);
+    MPI_Finalized(&finalized);
+    return !initialized || finalized ||
+           dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   }
 
-  /** "  WHAT: DIFFERENCE  (ok)", or (FAILED) beyond @p tolerance. */
+  /** Exit status 1 at the end of the program: the first failed check
+   * registers it (after MPI has ended, when main returns). */
+  inline void
+  failed()
+  {
+    static bool registered = false;
+    if (registered)
+      return;
+    registered = true;
+    std::atexit([] {
+      std::cout.flush();
+      std::fflush(nullptr);
+      std::_Exit(1);
+    });
+  }
+
+  /** "  WHAT: DIFFERENCE  (ok)", or (FAILED) beyond @p tolerance (or not
+   * a number). */
   inline void
   report(const std::string &what,
          const double       difference,
          const double       tolerance)
   {
+    const bool ok = difference <= tolerance;
+    if (!ok)
+      failed();
     if (first_process())
       std::cout << "  " << what << ": " << std::scientific
                 << std::setprecision(1) << difference
-                << (difference <= tolerance ? "  (ok)" : "  (FAILED)")
-                << std::defaultfloat << std::setprecision(10) << '\n';
+                << (ok ? "  (ok)" : "  (FAILED)") << std::defaultfloat
+                << std::setprecision(10) << '\n';
+  }
+
+  /** "  WHAT: yes", or "  WHAT: NO (FAILED)" if @p holds is false. */
+  inline bool
+  expect(const std::string &what, const bool holds)
+  {
+    if (!holds)
+      failed();
+    if (first_process())
+      std::cout << "  " << what << ": " << (holds ? "yes" : "NO (FAILED)")
+                << '\n';
+    return holds;
   }
   /** The unit cube (a boundary id per face) refined @p global times, then
    * @p steps times more where cell centres lie within @p radius of the

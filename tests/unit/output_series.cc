@@ -1,10 +1,16 @@
 // output_series: what classify() makes of file names of the series and of
 // names that only look like them, and what remove_stale_files() removes from
 // a directory holding a run's files and others, for a fresh run and a run
-// resumed after cycle 1.
+// resumed after cycle 1. Each result is checked against the documented rule
+// (output_series.h), written out here: the names of the series are owned,
+// the others not; a fresh run removes every series file and nothing else;
+// a run resumed after cycle k keeps the files of cycles 0..k, the
+// checkpoint of cycle k and the files of no cycle, and removes the rest of
+// the series (later cycles, other checkpoints, temporaries).
 
 #include <signorini/output/output_series.h>
 
+#include "checks.h"
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -94,7 +100,25 @@ namespace
     std::cout << '\n';
   }
 
-  void
+  /** The series files that the rule says a run resumed after
+   * @p resumed_cycle (none: a fresh run) removes, sorted. */
+  std::vector<std::string>
+  stale(const std::optional<unsigned int> &resumed_cycle)
+  {
+    std::vector<std::string> names;
+    for (const auto &name : series)
+      {
+        const auto member = output_series::classify(name);
+        if (!resumed_cycle || member.partial ||
+            (member.cycle && *member.cycle > *resumed_cycle) ||
+            (member.checkpoint && member.cycle != resumed_cycle))
+          names.push_back(name);
+      }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  std::vector<std::string>
   remove_and_list(const fs::path                    &directory,
                   const std::optional<unsigned int> &resumed_cycle)
   {
@@ -108,23 +132,49 @@ namespace
       list(directory);
     else
       std::cout << "  (no directory)\n";
+    auto sorted = removed;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted;
   }
 } // namespace
 
 int
 main()
 {
+  unsigned int n_wrong = 0;
   std::cout << "classify, series files:\n";
   for (const auto &name : series)
-    print(name);
+    {
+      print(name);
+      n_wrong += !output_series::classify(name).owned;
+    }
   for (const auto &name : {"solution-123.vtu",
                            "solution-10.12345.vtu",
                            "checkpoint-00.mesh_fixed.data.part",
                            "timings.csv.part"})
-    print(name);
+    {
+      print(name);
+      n_wrong += !output_series::classify(name).owned;
+    }
+  // The cycle of a series file is the number in its name.
+  for (const auto &name : series)
+    {
+      const auto member = output_series::classify(name);
+      const auto dash   = name.find('-');
+      if (dash != std::string::npos &&
+          member.cycle !=
+            static_cast<unsigned int>(std::stoul(name.substr(dash + 1, 2))))
+        ++n_wrong;
+      n_wrong += member.checkpoint != (name.rfind("checkpoint", 0) == 0);
+      n_wrong += member.partial !=
+                 (name.size() > 5 && name.substr(name.size() - 5) == ".part");
+    }
   std::cout << "classify, other files:\n";
   for (const auto &name : others)
-    print(name);
+    {
+      print(name);
+      n_wrong += output_series::classify(name).owned;
+    }
   for (const auto &name : {"",
                            ".part",
                            "solution-01.000.vtu",
@@ -139,27 +189,56 @@ main()
                            "solution-01.vtu.vtu",
                            "checkpoint-01.state.mesh",
                            "solution-99999999999999999999999.vtu"})
-    print(name);
+    {
+      print(name);
+      n_wrong += output_series::classify(name).owned;
+    }
+  checks::expect("series files owned, with their cycle, checkpoint and "
+                 "partial as named; other files not owned",
+                 n_wrong == 0);
 
   const fs::path directory =
     fs::temp_directory_path() /
     ("signorini-unit-output-series-" + std::to_string(::getpid()));
   fs::remove_all(directory);
 
+  // What is left: the files of others, and the series files kept.
+  const auto left_as_ruled = [&](const std::optional<unsigned int> &cycle) {
+    std::vector<std::string> names = others;
+    names.push_back("solution-05.vtu/");
+    const auto removed = stale(cycle);
+    for (const auto &name : series)
+      if (!std::binary_search(removed.begin(), removed.end(), name))
+        names.push_back(name);
+    std::sort(names.begin(), names.end());
+    std::vector<std::string> left;
+    for (const auto &entry : fs::directory_iterator(directory))
+      left.push_back(entry.path().filename().string() +
+                     (entry.is_directory() ? "/" : ""));
+    std::sort(left.begin(), left.end());
+    return left == names;
+  };
+
   std::cout << "remove_stale_files, a missing directory:\n";
-  remove_and_list(directory.string() + "-missing", {});
+  checks::expect("nothing removed, no directory made",
+                 remove_and_list(directory.string() + "-missing", {}).empty() &&
+                   !fs::exists(directory.string() + "-missing"));
 
   std::cout << "remove_stale_files, fresh run:\n";
   populate(directory);
-  remove_and_list(directory, {});
+  checks::expect("every series file removed",
+                 remove_and_list(directory, {}) == stale({}));
+  checks::expect("the others left", left_as_ruled({}));
 
   std::cout << "remove_stale_files, run resumed after cycle 1:\n";
   fs::remove_all(directory);
   populate(directory);
-  remove_and_list(directory, 1u);
+  checks::expect("later cycles, other checkpoints, temporaries removed",
+                 remove_and_list(directory, 1u) == stale(1u));
+  checks::expect("the rest left", left_as_ruled(1u));
 
   std::cout << "remove_stale_files, again (nothing left to remove):\n";
-  remove_and_list(directory, 1u);
+  checks::expect("nothing removed", remove_and_list(directory, 1u).empty());
 
   fs::remove_all(directory);
   std::cout << "temporary directory removed: "

@@ -1,13 +1,16 @@
 // The parse:: helpers of parameter-file lists: the values of valid texts and
-// the entry and message of the InputError of invalid ones.
+// the entry and message of the InputError of invalid ones. The values are
+// printed with 6 decimals; they are also checked exactly.
 
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
 
+#include "checks.h"
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -185,4 +188,47 @@ main()
   const InputError error = InputError::at("scene.prm:12", "unknown entry");
   std::cout << "  entry [" << error.entry << "], location [" << error.location
             << "], what: " << error.what() << '\n';
+
+  std::cout << "exact values:\n";
+  checks::expect("point<2>(\" -1.5e-3 ,4 \") = (-1.5e-3, 4)",
+                 parse::point<2>(" -1.5e-3 ,4 ", "Geometry/Center") ==
+                   dealii::Point<2>(-1.5e-3, 4.));
+  checks::expect("point<2>(\"1e3,0\") = (1000, 0)",
+                 parse::point<2>("1e3,0", "Geometry/Center") ==
+                   dealii::Point<2>(1000., 0.));
+  checks::expect("point<3>(\"0, 0.25, -8\") = (0, 0.25, -8)",
+                 parse::point<3>("0, 0.25, -8", "Geometry/Center") ==
+                   dealii::Point<3>(0., 0.25, -8.));
+  {
+    const auto list = parse::point_list<2>("10, 0; 5, 1;", "Output/Probes");
+    checks::expect("point_list<2>(\"10, 0; 5, 1;\") = (10, 0), (5, 1)",
+                   list.size() == 2 && list[0] == dealii::Point<2>(10., 0.) &&
+                     list[1] == dealii::Point<2>(5., 1.));
+  }
+  checks::expect("boundary_ids(\"2, 0, 2\") = {0, 2}",
+                 parse::boundary_ids("2, 0, 2", "Boundary/Fixed") ==
+                   std::set<dealii::types::boundary_id>{0, 2});
+  checks::expect("unsigned_list(\" 1 ,1 \", 2) = (1, 1)",
+                 parse::unsigned_list(" 1 ,1 ", 2, "Geometry/Repetitions") ==
+                   std::vector<unsigned int>{1, 1});
+  checks::expect("in_range keeps 1e-300 and 0.4999999 as they are",
+                 parse::in_range(1e-300,
+                                 parse::Range::positive(),
+                                 "Section/Entry") == 1e-300 &&
+                   parse::in_range(0.4999999,
+                                   parse::Range::open(-1., 0.5),
+                                   "Section/Entry") == 0.4999999);
+  {
+    bool named = false;
+    try
+      {
+        parse::in_range(0.5, parse::Range::open(-1., 0.5), "Section/Entry");
+      }
+    catch (const InputError &error)
+      {
+        named = error.entry == "Section/Entry";
+      }
+    checks::expect("in_range(0.5, open(-1, 0.5)) refused, naming the entry",
+                   named);
+  }
 }

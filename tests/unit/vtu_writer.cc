@@ -123,21 +123,25 @@ main()
                       << (3 * n_points * 4 + 262143) / 262144
                       << " block(s) of points: "
                       << (all ? "decoded exactly" : "FAILED") << std::endl;
+            if (!all)
+              checks::failed();
           }
     }
 
   std::cout << "block boundaries after 1 and 2 bytes of a base64 group: "
             << (carried[1] && carried[2] ? "both met" : "FAILED: not both met")
             << std::endl;
+  if (!carried[1] || !carried[2])
+    checks::failed();
 
   VtuPiece empty;
   empty.fields.push_back({"displacement", 3, {}});
   std::ostringstream out;
   write_vtu(out, empty, VtuCompression::lz4, 1);
-  std::cout << "empty piece: "
-            << (out.str().find("NumberOfPoints=\"0\"") != std::string::npos &&
-                    out.str().find("</VTKFile>") != std::string::npos ?
-                  "valid" :
-                  "FAILED")
-            << std::endl;
+  const bool valid =
+    out.str().find("NumberOfPoints=\"0\"") != std::string::npos &&
+    out.str().find("</VTKFile>") != std::string::npos;
+  std::cout << "empty piece: " << (valid ? "valid" : "FAILED") << std::endl;
+  if (!valid)
+    checks::failed();
 }
