@@ -15,6 +15,17 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** " (QUESTIONS)" for a failure's message, nothing for none. */
+    std::string
+    questions(const std::string &text)
+    {
+      const auto first = text.find_first_not_of(' ');
+      return first == std::string::npos ? "" : " (" + text.substr(first) + ")";
+    }
+  } // namespace
+
   template <int dim>
   NewtonDriver<dim>::NewtonDriver(const Discretisation<dim> &discretisation,
                                   ElasticOperator<dim>      &elastic_operator,
@@ -39,6 +50,28 @@ namespace signorini
     , pcout(pcout)
     , timer(timer)
   {
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::supports_hold_body(const std::string &question)
+  {
+    supports_hold     = true;
+    material_question = question;
+  }
+
+  template <int dim>
+  std::string
+  NewtonDriver<dim>::singular_question() const
+  {
+    // Where the supports hold the body, the solver's own message stands,
+    // with the material's question if there is one.
+    if (!supports_hold)
+      return "is the body held against rigid motion?";
+    return material_question.empty() ?
+             std::string() :
+             "the supports hold the body against every rigid motion: " +
+               material_question;
   }
 
   template <int dim>
@@ -204,8 +237,8 @@ namespace signorini
       {
         throw SolverFailure(failure.status,
                             std::string(failure.what()) +
-                              " (is the body held against rigid motion?" +
-                              formulation.failure_hint() + ")");
+                              questions(singular_question() +
+                                        formulation.failure_hint()));
       }
   }
 
@@ -261,7 +294,7 @@ namespace signorini
           throw SolverFailure(exit_status::linear_solver,
                               "the solution is not a number on cycle " +
                                 std::to_string(cycle) +
-                                " (is the body held against rigid motion?)");
+                                questions(singular_question()));
         if (changes == 0 && residual_norm < parameters.tolerance)
           return;
         // With the active set unchanged, the next step solves the same linear
@@ -279,7 +312,10 @@ namespace signorini
                 std::to_string(cycle) + " at residual " +
                 number(residual_norm) + " with an unchanged active set (" +
                 formulation.stall_hint() +
-                "is the body held against rigid motion? is Linear "
+                (!supports_hold            ? singular_question() + " " :
+                 material_question.empty() ? std::string() :
+                                             material_question + " ") +
+                "is Linear "
                 "solver/Tolerance too loose?)");
           }
         previous_residual = residual_norm;

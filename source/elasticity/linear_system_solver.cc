@@ -258,7 +258,8 @@ namespace signorini
                               (symmetric ? "CG" : "GMRES") +
                               " with AMG) did not converge in " +
                               std::to_string(failure.last_step) +
-                              " iterations (residual " +
+                              " iterations (Linear solver/Maximum iterations; "
+                              "residual " +
                               std::to_string(failure.last_residual) + ")");
       }
     catch (const ExceptionBase &)

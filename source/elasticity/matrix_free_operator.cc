@@ -348,7 +348,8 @@ namespace signorini
                               " with geometric multigrid) did not converge "
                               "in " +
                               std::to_string(failure.last_step) +
-                              " iterations (residual " +
+                              " iterations (Linear solver/Maximum iterations; "
+                              "residual " +
                               std::to_string(failure.last_residual) + ")");
       }
     d += u0;

@@ -155,7 +155,7 @@ namespace signorini
   }
 
   template <int dim>
-  void
+  bool
   check_rigid_motions_held(
     const Discretisation<dim>             &discretisation,
     const std::vector<HeldDirection<dim>> &contact_directions,
@@ -164,7 +164,7 @@ namespace signorini
   {
     const unsigned int n = modes.size();
     if (n == 0)
-      return;
+      return true;
     // The Gram matrix of the constraints' rows (the modes at a constraint),
     // summed over the processes: its rank is the constraint matrix's.
     std::vector<double> gram(n * n, 0.);
@@ -204,7 +204,9 @@ namespace signorini
               add_row();
             }
         }
-    // Contact holds a node along the obstacle's normal.
+    // The supports alone, then contact holding a node along the obstacle's
+    // normal as well.
+    std::vector<double> supports_gram = gram;
     if (contact_can_hold)
       for (const auto &[position, direction] : contact_directions)
         {
@@ -212,48 +214,55 @@ namespace signorini
             row[m] = modes[m].value(position) * direction;
           add_row();
         }
-    Utilities::MPI::sum(gram, discretisation.mpi_communicator(), gram);
+    // The motions that a Gram matrix (this process's part) leaves free, in
+    // words. Collective.
+    const auto free_motions_of = [&](std::vector<double> part) {
+      std::vector<double> summed(part.size());
+      Utilities::MPI::sum(part, discretisation.mpi_communicator(), summed);
 
-    // Cholesky in the order of the modes: a mode whose Schur complement on
-    // the modes held before it vanishes is free, combined with those.
-    FullMatrix<double> g(n, n);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        g(i, j) = gram[i * n + j];
-    std::vector<unsigned int> held;
-    std::vector<std::string>  free_motions;
-    for (unsigned int m = 0; m < n; ++m)
-      {
-        Vector<double> motion(n);
-        motion[m]                = 1.;
-        double             schur = g(m, m);
-        const unsigned int h     = held.size();
-        if (h > 0)
-          {
-            FullMatrix<double> inverse(h, h);
-            Vector<double>     coupling(h), coefficients(h);
-            for (unsigned int a = 0; a < h; ++a)
-              {
-                coupling[a] = g(held[a], m);
-                for (unsigned int b = 0; b < h; ++b)
-                  inverse(a, b) = g(held[a], held[b]);
-              }
-            inverse.gauss_jordan();
-            inverse.vmult(coefficients, coupling);
-            for (unsigned int a = 0; a < h; ++a)
-              {
-                schur -= coupling[a] * coefficients[a];
-                motion[held[a]] = -coefficients[a];
-              }
-          }
-        if (schur <= 1e-10 * g(m, m))
-          free_motions.push_back(rigid_motion_in_words(
-            motion, modes, 0.5 * discretisation.body_size()));
-        else
-          held.push_back(m);
-      }
+      // Cholesky in the order of the modes: a mode whose Schur complement on
+      // the modes held before it vanishes is free, combined with those.
+      FullMatrix<double> g(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          g(i, j) = summed[i * n + j];
+      std::vector<unsigned int> held;
+      std::vector<std::string>  free_motions;
+      for (unsigned int m = 0; m < n; ++m)
+        {
+          Vector<double> motion(n);
+          motion[m]                = 1.;
+          double             schur = g(m, m);
+          const unsigned int h     = held.size();
+          if (h > 0)
+            {
+              FullMatrix<double> inverse(h, h);
+              Vector<double>     coupling(h), coefficients(h);
+              for (unsigned int a = 0; a < h; ++a)
+                {
+                  coupling[a] = g(held[a], m);
+                  for (unsigned int b = 0; b < h; ++b)
+                    inverse(a, b) = g(held[a], held[b]);
+                }
+              inverse.gauss_jordan();
+              inverse.vmult(coefficients, coupling);
+              for (unsigned int a = 0; a < h; ++a)
+                {
+                  schur -= coupling[a] * coefficients[a];
+                  motion[held[a]] = -coefficients[a];
+                }
+            }
+          if (schur <= 1e-10 * g(m, m))
+            free_motions.push_back(rigid_motion_in_words(
+              motion, modes, 0.5 * discretisation.body_size()));
+          else
+            held.push_back(m);
+        }
+      return free_motions;
+    };
+    const auto free_motions = free_motions_of(gram);
     if (free_motions.empty())
-      return;
+      return free_motions_of(supports_gram).empty();
 
     std::string motions;
     for (unsigned int k = 0; k < free_motions.size(); ++k)
@@ -280,12 +289,12 @@ namespace signorini
   rigid_body_modes(const Discretisation<2> &);
   template std::vector<RigidMode<3>>
   rigid_body_modes(const Discretisation<3> &);
-  template void
+  template bool
   check_rigid_motions_held(const Discretisation<2> &,
                            const std::vector<HeldDirection<2>> &,
                            const std::vector<RigidMode<2>> &,
                            const bool);
-  template void
+  template bool
   check_rigid_motions_held(const Discretisation<3> &,
                            const std::vector<HeldDirection<3>> &,
                            const std::vector<RigidMode<3>> &,

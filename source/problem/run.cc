@@ -6,6 +6,7 @@
 #include <signorini/base/text.h>
 #include <signorini/discretisation/axisymmetry.h>
 #include <signorini/elasticity/rigid_motions.h>
+#include <signorini/input/entry_text.h>
 #include <signorini/mesh_adaptation/kelly_indicator.h>
 #include <signorini/problem/contact_problem.h>
 
@@ -100,10 +101,24 @@ namespace signorini
       for (const auto &node : contact_surface.nodes())
         if (node.owned)
           contact_directions.push_back({node.position, node.normal});
-      check_rigid_motions_held(discretisation,
-                               contact_directions,
-                               rigid_body_modes(discretisation),
-                               parameters.contact.acts());
+      const bool supports_hold =
+        check_rigid_motions_held(discretisation,
+                                 contact_directions,
+                                 rigid_body_modes(discretisation),
+                                 parameters.contact.acts());
+      // Where the supports hold the body, a singular system is the
+      // material's or the mesh's.
+      if (supports_hold)
+        {
+          const auto  &material = parameters.material;
+          const double ratio = material.template lambda<dim>() / material.mu();
+          newton.supports_hold_body(ratio > 1e3 ?
+                                      "is Material/Poisson's ratio (" +
+                                        entry_text::of(material.poisson_ratio) +
+                                        ", lambda / mu = " + number(ratio) +
+                                        ") too near 0.5?" :
+                                      std::string());
+        }
     }
     if (const auto warning =
           parameters.material.check_element(discretisation.simplex());

@@ -47,6 +47,14 @@ namespace signorini
                  dealii::ConditionalOStream &pcout,
                  dealii::TimerOutput        &timer);
 
+    /** The supports alone hold the body against every rigid motion: a
+     * failed linear solve, a solution that is not a number or a stall then
+     * asks @p material_question (if not empty; e.g. whether Poisson's ratio
+     * is too near 0.5) rather than "is the body held against rigid
+     * motion?", which they ask where contact must hold the body. */
+    void
+    supports_hold_body(const std::string &material_question);
+
     /** Sizes the residual for the current mesh. */
     void
     reinit();
@@ -144,6 +152,13 @@ namespace signorini
     dealii::TimerOutput        &timer;
     SystemAdditions<dim>        additions;
     unsigned int                newton_iterations = 0;
+    /** See supports_hold_body(). */
+    bool        supports_hold = false;
+    std::string material_question;
+
+    /** What a failed solve or a solution that is not a number asks. */
+    std::string
+    singular_question() const;
   };
 } // namespace signorini
 

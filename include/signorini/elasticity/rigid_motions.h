@@ -59,10 +59,12 @@ namespace signorini
    * so every process decides alike); a combination of modes that it maps to
    * zero is free. Throws an InputError on the entry `Boundary
    * conditions/Dirichlet` naming each free motion, e.g. "nothing holds the body
-   * against a translation along x". Collective.
+   * against a translation along x". Returns whether the supports alone hold
+   * every mode (then a singular Newton system is not contact's failure to
+   * hold the body). Collective.
    */
   template <int dim>
-  void
+  bool
   check_rigid_motions_held(
     const Discretisation<dim>             &discretisation,
     const std::vector<HeldDirection<dim>> &contact_directions,
