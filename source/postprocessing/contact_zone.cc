@@ -14,6 +14,45 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** The unit directions along a contact zone with the mean unit
+     * @p normal, along which its width is measured: the radial one in an
+     * axisymmetric model (the contact radius, also on an inclined
+     * surface); in 2D the axis least aligned with the normal, made tangent
+     * to it; in 3D both axes other than the one most aligned with it. */
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    contact_zone_directions(const Tensor<1, dim> &normal,
+                            const bool            axisymmetric)
+    {
+      if (axisymmetric)
+        {
+          Tensor<1, dim> radial;
+          radial[0] = 1.;
+          return {radial};
+        }
+      if (dim == 2)
+        return {unit_vector_across(normal)};
+      // In 3D the two axes other than the one most aligned with the normal,
+      // each made tangent to it.
+      unsigned int along = 0;
+      for (unsigned int d = 1; d < dim; ++d)
+        if (std::abs(normal[d]) > std::abs(normal[along]))
+          along = d;
+      std::vector<Tensor<1, dim>> directions;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (d != along)
+          {
+            Tensor<1, dim> tangent;
+            tangent[d] = 1.;
+            tangent -= (tangent * normal) * normal;
+            directions.push_back(tangent / tangent.norm());
+          }
+      return directions;
+    }
+  } // namespace
+
   template <int dim>
   ContactZone<dim>
   evaluate_contact_zone(const Discretisation<dim>           &discretisation,
@@ -74,20 +113,29 @@ namespace signorini
         if (Utilities::MPI::sum(n_active[k], comm) == 0)
           continue;
         const double length = mean_normal[k].norm();
-        // A unit vector along the contact zone.
-        const Tensor<1, dim> tangent = unit_vector_across<dim>(
-          length > 0 ? mean_normal[k] / length : mean_normal[k]);
-        double low = std::numeric_limits<double>::max(), high = -low;
-        for (const auto &node : nodes)
-          if (node.owned && node.in_contact() && node.obstacle == k)
-            {
-              const double s = tangent * node.position;
-              low            = std::min(low, s);
-              high           = std::max(high, s);
-            }
-        low                   = Utilities::MPI::min(low, comm);
-        high                  = Utilities::MPI::max(high, comm);
-        contact.contact_width = high >= low ? high - low : 0.;
+        const auto   across =
+          contact_zone_directions(length > 0 ? mean_normal[k] / length :
+                                               mean_normal[k],
+                                  discretisation.axisymmetric());
+        // The extent of the nodes in contact along each direction; the
+        // width is the smallest (the same on any number of processes: a
+        // near tie of two axes in the mean normal no longer picks one).
+        contact.contact_width = std::numeric_limits<double>::max();
+        for (const auto &tangent : across)
+          {
+            double low = std::numeric_limits<double>::max(), high = -low;
+            for (const auto &node : nodes)
+              if (node.owned && node.in_contact() && node.obstacle == k)
+                {
+                  const double s = tangent * node.position;
+                  low            = std::min(low, s);
+                  high           = std::max(high, s);
+                }
+            low  = Utilities::MPI::min(low, comm);
+            high = Utilities::MPI::max(high, comm);
+            contact.contact_width =
+              std::min(contact.contact_width, high >= low ? high - low : 0.);
+          }
         zone.contact_width =
           std::max(zone.contact_width, contact.contact_width);
       }

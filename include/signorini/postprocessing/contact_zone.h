@@ -19,9 +19,14 @@ namespace signorini
   {
     /** Largest nodal contact pressure [MPa]. */
     double max_pressure = 0.;
-    /** Extent of the active nodes along the contact zone [mm]: along the
-     * coordinate axis least aligned with the active nodes' mean normal,
-     * made tangent to it (x for a floor, y for a wall x = const). */
+    /** Extent of the active nodes across the contact zone [mm]: in 2D
+     * along the coordinate axis least aligned with the active nodes' mean
+     * normal, made tangent to it (x for a floor, y for a wall x = const);
+     * in an axisymmetric model along r (the contact radius where the zone
+     * covers the axis, also on an inclined surface such as a cone in its
+     * seat); in 3D the smaller of the extents along the two axes other
+     * than the one most aligned with the normal (a round zone's diameter,
+     * a line contact's width; its length is contact_area / width). */
     double contact_width = 0.;
     /** Measure of the contact zone [mm in 2D, mm^2 in 3D and
      * axisymmetric]: the integral
