@@ -12,6 +12,7 @@ import concurrent.futures
 import csv
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -151,13 +152,23 @@ def run(work, name, base, settings, check=True, processes=0, core=None):
                    "-c", str(core)] + command
     elif processes > 0:
         command = ["mpirun", "-np", str(processes)] + command
+    session = None
     if core is not None or processes > 0:
+        # Each mpirun with a temporary folder of its own: Open MPI's session
+        # folder under a shared one races with runs that end at the same
+        # moment ("orte_init failed").
+        session = tempfile.mkdtemp(prefix="signorini-mpirun-")
         env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                    OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                   OMPI_MCA_btl_vader_single_copy_mechanism="none")
+                   OMPI_MCA_btl_vader_single_copy_mechanism="none",
+                   TMPDIR=session)
     start = time.monotonic()
-    process = subprocess.run(command, stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        process = subprocess.run(command, stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE, text=True, env=env)
+    finally:
+        if session is not None:
+            shutil.rmtree(session, ignore_errors=True)
     result = Run()
     result.wall = time.monotonic() - start
     result.status = process.returncode

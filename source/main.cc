@@ -2,12 +2,14 @@
 
 #include <signorini/base/interruption.h>
 #include <signorini/base/memory.h>
+#include <signorini/base/mpi_session.h>
 #include <signorini/program.h>
 
 int
 main(int argc, char **argv)
 {
   signorini::tune_allocator();
+  signorini::use_private_mpi_session_folder();
   // Threads: as many as there are cores per process (one process on two
   // cores estimates errors and builds output patches on both).
   dealii::Utilities::MPI::MPI_InitFinalize mpi(

@@ -8,6 +8,7 @@
 #include <signorini/elasticity/rigid_motions.h>
 #include <signorini/input/entry_text.h>
 #include <signorini/mesh_adaptation/kelly_indicator.h>
+#include <signorini/postprocessing/boundary_penetration.h>
 #include <signorini/problem/contact_problem.h>
 
 #include <chrono>
@@ -159,6 +160,14 @@ namespace signorini
         timings.run_time = run_time;
         record_statistics(cycle);
         output_results(cycle);
+        // The cycle's results are written: a body that an obstacle passes
+        // through where it may not touch stops the run after them.
+        if (parameters.contact.acts())
+          check_boundary_penetration(discretisation,
+                                     *obstacle,
+                                     parameters.obstacle.contact_ids,
+                                     solution,
+                                     cycle);
         if (parameters.output.timing_table)
           {
             timings.linear_solve = time_linear_solve();
