@@ -162,16 +162,27 @@ namespace signorini
       {
         std::optional<InputError> error;
         if (non_finite)
-          error = InputError(
-            obstacle_set[non_finite->second].entry(),
-            "is not a finite number on the contact "
-            "boundary at (" +
-              [&]() {
-                std::ostringstream where;
-                where << non_finite->first;
-                return where.str();
-              }() +
-              ")");
+          {
+            std::ostringstream where;
+            where << non_finite->first;
+            // A normal that is not a number has no direction: a zero
+            // gradient (a constant signed distance) rather than a gap
+            // expression that overflows.
+            Tensor<1, dim> normal;
+            obstacle_set.gap(non_finite->second, non_finite->first, normal);
+            bool directed = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              directed = directed && std::isfinite(normal[d]);
+            error = InputError(
+              obstacle_set[non_finite->second].entry(),
+              directed ?
+                "is not a finite number on the contact boundary at (" +
+                  where.str() + ")" :
+                "has no normal on the contact boundary at (" + where.str() +
+                  "), so the gap there is undefined: its gradient is zero "
+                  "(a signed distance changes by 1 mm per mm, its gradient "
+                  "has length 1)");
+          }
         throw_first(error, mpi_communicator);
       }
 
