@@ -283,6 +283,16 @@ namespace signorini
           std::max(std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) +
                              (z1 - z0) * (z1 - z0)),
                    1e-300);
+        // A 2D scene's obstacle is a surface in z = 0: a solid's faces in
+        // space are not (its section would be taken for the obstacle).
+        if (dim == 2 && (TopExp_Explorer(shape, TopAbs_SOLID).More() ||
+                         std::max(std::abs(z0), std::abs(z1)) >
+                           box.GetGap() + 1e-9 * geometry->size))
+          throw InputError(entry,
+                           "'" + file +
+                             "' holds a solid or surfaces outside the plane "
+                             "z = 0 (a 3D geometry); a 2D scene's obstacle "
+                             "is a surface in the plane z = 0");
       }
     catch (const Standard_Failure &failure)
       {
