@@ -312,9 +312,8 @@ namespace signorini
                 std::to_string(cycle) + " at residual " +
                 number(residual_norm) + " with an unchanged active set (" +
                 formulation.stall_hint() +
-                (!supports_hold            ? singular_question() + " " :
-                 material_question.empty() ? std::string() :
-                                             material_question + " ") +
+                (singular_question().empty() ? std::string() :
+                                               singular_question() + " ") +
                 "is Linear "
                 "solver/Tolerance too loose?)");
           }

@@ -130,9 +130,6 @@ namespace signorini
         constraints.clear();
         constraints.reinit(discretisation.locally_relevant_dofs());
         additions.add_constraints(constraints);
-        added_dofs.clear();
-        for (const auto &line : additions.constraints)
-          added_dofs.push_back(line.dof);
         constraints.merge(discretisation.constraints(),
                           AffineConstraints<double>::left_object_wins);
         constraints.close();
@@ -185,8 +182,9 @@ namespace signorini
     // The load at a dof that an added constraint line solves for goes to
     // the dofs it depends on (as distribute_local_to_global puts a cell's
     // load): along the obstacle's surface it moves the node.
-    for (const auto dof : added_dofs)
-      if (discretisation.locally_owned_dofs().is_element(dof))
+    for (const auto &line : additions.constraints)
+      if (const auto dof = line.dof;
+          discretisation.locally_owned_dofs().is_element(dof))
         if (const auto *entries = constraints.get_constraint_entries(dof))
           if (!entries->empty())
             {

@@ -85,11 +85,9 @@ namespace signorini
     CellStiffness<dim> cell_stiffness;
     const Material    &material;
     /** The discretisation's constraints plus the additions' lines. */
-    dealii::AffineConstraints<double> constraints;
-    /** The dofs that the additions' constraint lines solve for. */
-    std::vector<dealii::types::global_dof_index> added_dofs;
-    dealii::TrilinosWrappers::SparseMatrix       system_matrix;
-    VectorType                                   system_rhs;
+    dealii::AffineConstraints<double>      constraints;
+    dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    VectorType                             system_rhs;
     /** system_rhs without the extra forces. */
     VectorType base_rhs;
     VectorType load_vector;
