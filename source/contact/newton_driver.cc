@@ -80,6 +80,11 @@ namespace signorini
   {
     contact_residual.reinit(discretisation.locally_owned_dofs(),
                             discretisation.mpi_communicator());
+    // A path-dependent law counts slip from the first step's start: zero.
+    if (law.path_dependent())
+      step_start.reinit(solution);
+    else
+      step_start.clear();
   }
 
   template <int dim>
@@ -87,6 +92,14 @@ namespace signorini
   NewtonDriver<dim>::start_cycle()
   {
     newton_iterations = 0;
+  }
+
+  template <int dim>
+  void
+  NewtonDriver<dim>::start_step()
+  {
+    if (law.path_dependent())
+      step_start = solution;
   }
 
   template <int dim>

@@ -48,6 +48,15 @@ namespace signorini
     virtual std::string
     name() const = 0;
 
+    /** Whether a node's law depends on its path (friction: the slip of a
+     * load step is counted from the step's start), so that the Newton
+     * iteration keeps the displacement at the start of each load step. */
+    virtual bool
+    path_dependent() const
+    {
+      return false;
+    }
+
     /** The state of @p node for the augmented normal pressure @p sigma
      * [MPa]. */
     virtual NodeState

@@ -63,6 +63,12 @@ namespace signorini
     void
     start_cycle();
 
+    /** Starts a load step: the current displacement becomes the reference
+     * from which the step's tangential slip is counted (the state of the
+     * previous step; zero on the first). */
+    void
+    start_step();
+
     /** Puts the nodes in contact that touch or penetrate, and sets the
      * others' states by the law, from the current displacement and
      * pressure. */
@@ -148,6 +154,8 @@ namespace signorini
     VectorType                 &solution;
     VectorType                 &contact_pressure;
     VectorType                  contact_residual;
+    /** The displacement at the start of the load step [mm], ghosted. */
+    VectorType step_start;
     dealii::ConditionalOStream &pcout;
     dealii::TimerOutput        &timer;
     SystemAdditions<dim>        additions;
