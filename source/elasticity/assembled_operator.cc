@@ -133,6 +133,15 @@ namespace signorini
         constraints.merge(discretisation.constraints(),
                           AffineConstraints<double>::left_object_wins);
         constraints.close();
+        test_constraints.clear();
+        if (additions.has_test_weights)
+          {
+            test_constraints.reinit(discretisation.locally_relevant_dofs());
+            additions.add_test_constraints(test_constraints);
+            test_constraints.merge(discretisation.constraints(),
+                                   AffineConstraints<double>::left_object_wins);
+            test_constraints.close();
+          }
         assemble_matrix(additions);
         base_rhs         = system_rhs;
         assembled_for    = key;
@@ -164,8 +173,9 @@ namespace signorini
     const unsigned int n = fe.n_dofs_per_cell();
     // The right-hand side gets only the lifting of inhomogeneous
     // constraints here; the load vector is added below.
-    Vector<double>                       cell_rhs(n);
+    Vector<double>                       cell_rhs(n), cell_lifted(n);
     std::vector<types::global_dof_index> dof_indices(n);
+    const bool petrov_galerkin = additions.has_test_weights;
 
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
@@ -173,8 +183,11 @@ namespace signorini
         {
           const auto &cell_matrix = cell_stiffness.matrix(cell, fe_values);
           cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
+          if (!petrov_galerkin)
+            constraints.distribute_local_to_global(
+              cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
+          else
+            add_petrov_galerkin(cell_matrix, dof_indices, cell_lifted);
         }
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
@@ -182,10 +195,11 @@ namespace signorini
     // The load at a dof that an added constraint line solves for goes to
     // the dofs it depends on (as distribute_local_to_global puts a cell's
     // load): along the obstacle's surface it moves the node.
+    const auto &equations = petrov_galerkin ? test_constraints : constraints;
     for (const auto &line : additions.constraints)
       if (const auto dof = line.dof;
           discretisation.locally_owned_dofs().is_element(dof))
-        if (const auto *entries = constraints.get_constraint_entries(dof))
+        if (const auto *entries = equations.get_constraint_entries(dof))
           if (!entries->empty())
             {
               for (const auto &[other, weight] : *entries)
@@ -224,6 +238,43 @@ namespace signorini
         system_matrix.compress(VectorOperation::add);
         system_rhs.compress(VectorOperation::add);
       }
+  }
+
+  template <int dim>
+  void
+  AssembledOperator<dim>::add_petrov_galerkin(
+    const FullMatrix<double>                   &cell_matrix,
+    const std::vector<types::global_dof_index> &dof_indices,
+    Vector<double>                             &cell_lifted)
+  {
+    // Q^T K P: the rows by the test weights, the columns by the lines';
+    // the lifting -K g of the inhomogeneities g by the test weights too;
+    // a constrained row gets its diagonal (its value comes from
+    // distribute()).
+    test_constraints.distribute_local_to_global(
+      cell_matrix, dof_indices, constraints, dof_indices, system_matrix);
+    const unsigned int n       = dof_indices.size();
+    bool               lifting = false;
+    for (unsigned int j = 0; j < n; ++j)
+      if (constraints.is_constrained(dof_indices[j]))
+        {
+          system_matrix.add(dof_indices[j], dof_indices[j], cell_matrix(j, j));
+          lifting = lifting ||
+                    constraints.is_inhomogeneously_constrained(dof_indices[j]);
+        }
+    if (!lifting)
+      return;
+    cell_lifted = 0.;
+    for (unsigned int j = 0; j < n; ++j)
+      if (const double g = constraints.is_constrained(dof_indices[j]) ?
+                             constraints.get_inhomogeneity(dof_indices[j]) :
+                             0.;
+          g != 0.)
+        for (unsigned int i = 0; i < n; ++i)
+          cell_lifted(i) -= cell_matrix(i, j) * g;
+    test_constraints.distribute_local_to_global(cell_lifted,
+                                                dof_indices,
+                                                system_rhs);
   }
 
   template <int dim>

@@ -15,6 +15,7 @@ namespace signorini
                           const LinearSolverParameters  &parameters,
                           const bool                     remedies,
                           const bool                     verbose,
+                          const bool                     test_weights,
                           ConditionalOStream            &pcout,
                           TimerOutput                   &timer)
   {
@@ -42,7 +43,7 @@ namespace signorini
           return std::make_unique<AutomaticOperator<dim>>(
             discretisation,
             !material.axisymmetric() &&
-              !material.template mean_dilatation<dim>(false),
+              !material.template mean_dilatation<dim>(false) && !test_weights,
             make);
         default:
           return make(false);
@@ -57,6 +58,7 @@ namespace signorini
                           const LinearSolverParameters &,
                           bool,
                           bool,
+                          bool,
                           ConditionalOStream &,
                           TimerOutput &);
   template std::unique_ptr<ElasticOperator<3>>
@@ -65,6 +67,7 @@ namespace signorini
                           const BoundaryConditions<3> &,
                           Loads<3> &,
                           const LinearSolverParameters &,
+                          bool,
                           bool,
                           bool,
                           ConditionalOStream &,

@@ -176,6 +176,12 @@ namespace signorini
   MatrixFreeOperator<dim>::setup_contact(const SystemAdditions<dim> &additions)
   {
     TimerOutput::Scope t(timer, "Solve: multigrid contact");
+    if (additions.has_test_weights)
+      throw SolverFailure(exit_status::linear_solver,
+                          "the matrix-free operator does not condense lines "
+                          "with test weights of their own (friction's "
+                          "slipping nodes): use Linear solver/Type = amg cg "
+                          "or direct");
     // The additions' constraint lines, closed with the discretisation's
     // constraints as AssembledOperator does.
     constraints.clear();

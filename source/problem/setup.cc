@@ -33,6 +33,7 @@ namespace signorini
                                                parameters.linear_solver,
                                                parameters.contact.remedies,
                                                parameters.output.verbose,
+                                               false,
                                                pcout,
                                                timer))
     , obstacle(create_obstacles(parameters.obstacle))

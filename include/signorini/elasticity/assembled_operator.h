@@ -4,7 +4,9 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/cell_stiffness.h>
@@ -76,6 +78,16 @@ namespace signorini
     void
     assemble_matrix(const SystemAdditions<dim> &additions);
 
+    /** Adds a cell's @p cell_matrix at @p dof_indices to the matrix as
+     * Q^T K P (the test weights on the rows, the lines' on the columns) and
+     * its lifting of the inhomogeneities to the right-hand side
+     * (@p cell_lifted: scratch). */
+    void
+    add_petrov_galerkin(
+      const dealii::FullMatrix<double>                   &cell_matrix,
+      const std::vector<dealii::types::global_dof_index> &dof_indices,
+      dealii::Vector<double>                             &cell_lifted);
+
     const Discretisation<dim>    &discretisation;
     Loads<dim>                   &loads;
     const LinearSolverParameters &parameters;
@@ -85,7 +97,11 @@ namespace signorini
     CellStiffness<dim> cell_stiffness;
     const Material    &material;
     /** The discretisation's constraints plus the additions' lines. */
-    dealii::AffineConstraints<double>      constraints;
+    dealii::AffineConstraints<double> constraints;
+    /** The same with the lines' test weights, where a line has its own:
+     * the equations' side of the condensation (empty where it is the
+     * constraints' side). */
+    dealii::AffineConstraints<double>      test_constraints;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     VectorType                             system_rhs;
     /** system_rhs without the extra forces. */

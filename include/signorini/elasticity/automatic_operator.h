@@ -37,7 +37,8 @@ namespace signorini
 
     /** @p make builds the matrix-free (true) or the assembled operator;
      * @p pointwise: whether the volumetric strain is taken at every
-     * point. */
+     * point and no line will have test weights of its own (what the
+     * matrix-free operator does). */
     AutomaticOperator(const Discretisation<dim> &discretisation,
                       const bool                 pointwise,
                       Factory                    make);

@@ -21,6 +21,11 @@ namespace signorini
    * - Constraint lines: x_dof = sum weight x_master + inhomogeneity, as
    *   AffineConstraints holds them (a node held on an obstacle, a node that
    *   sticks); merged with the discretisation's constraints, these win.
+   *   A line may have test weights of its own (Petrov-Galerkin): the
+   *   equation of its dof then enters its masters' equations with those
+   *   weights rather than the line's (a slipping node's, whose tangential
+   *   equation binds its tangential force to its normal force); the
+   *   system is then not symmetric.
    * - Constraint springs: the same constraints as stiff springs, for the
    *   parts of a solver that cannot hold constraints (the coarser levels of
    *   a geometric multigrid): a stiffness d d^T at a vertex, scaled by the
@@ -44,6 +49,10 @@ namespace signorini
       Index                                 dof;
       std::vector<std::pair<Index, double>> entries;
       double                                inhomogeneity = 0.;
+      /** Whether the test weights differ from the entries, and those
+       * weights (the dofs whose equations receive this dof's). */
+      bool                                  petrov_galerkin = false;
+      std::vector<std::pair<Index, double>> test_entries;
     };
 
     struct ConstraintSpring
@@ -82,10 +91,11 @@ namespace signorini
     std::vector<Block> blocks;
     /** At owned dofs. */
     std::vector<Force> forces;
-    /** Whether any process has blocks, or forces (the same on every
-     * process). */
-    bool has_blocks = false;
-    bool has_forces = false;
+    /** Whether any process has blocks, forces, or lines with test weights
+     * of their own (the same on every process). */
+    bool has_blocks       = false;
+    bool has_forces       = false;
+    bool has_test_weights = false;
     /** Whether the system stays symmetric (CG), or not (GMRES); the same on
      * every process. */
     bool symmetric = true;
@@ -97,6 +107,12 @@ namespace signorini
     /** Adds the constraint lines to @p constraints, in their order. */
     void
     add_constraints(dealii::AffineConstraints<double> &constraints) const;
+
+    /** Adds the constraint lines with their test weights (those that have
+     * them; the others as they are) to @p constraints: the constraints of
+     * the equations' side of a Petrov-Galerkin condensation. */
+    void
+    add_test_constraints(dealii::AffineConstraints<double> &constraints) const;
   };
 } // namespace signorini
 
