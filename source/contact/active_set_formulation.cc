@@ -70,13 +70,32 @@ namespace signorini
 
   template <int dim>
   void
-  ActiveSetFormulation<dim>::linearise(const ContactSurface<dim> &surface,
-                                       const ContactLaw<dim>     &law,
-                                       SystemAdditions<dim> &additions) const
+  ActiveSetFormulation<dim>::linearise(
+    const ContactSurface<dim>            &surface,
+    const ContactLaw<dim>                &law,
+    const std::vector<NodeTraction<dim>> &tractions,
+    SystemAdditions<dim>                 &additions) const
   {
-    condition_enforcement::add_constraints(surface, law, additions);
-    additions.key           = {surface.active_set_signature(), 0.};
+    condition_enforcement::add_constraints(surface, law, tractions, additions);
+    additions.key = {surface.active_set_signature(), 0.};
+    // A slipping node's equation changes with its slip direction, which
+    // the signature does not hold: such a system is never reused.
+    if (additions.has_test_weights)
+      additions.key.first.second += ++linearisations;
     additions.local_changes = true;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ActiveSetFormulation<dim>::tangential_traction(
+    const unsigned int,
+    const ContactNode<dim> &,
+    const Tensor<1, dim> &slip,
+    const Tensor<1, dim> &traction) const
+  {
+    // The primal-dual rule of the tangential traction, with the normal's
+    // c: q - c s.
+    return traction - complementarity_constant * slip;
   }
 
   template <int dim>

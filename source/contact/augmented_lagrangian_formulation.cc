@@ -140,12 +140,13 @@ namespace signorini
   template <int dim>
   void
   AugmentedLagrangianFormulation<dim>::linearise(
-    const ContactSurface<dim> &surface,
-    const ContactLaw<dim>     &law,
-    SystemAdditions<dim>      &additions) const
+    const ContactSurface<dim>            &surface,
+    const ContactLaw<dim>                &law,
+    const std::vector<NodeTraction<dim>> &tractions,
+    SystemAdditions<dim>                 &additions) const
   {
     condition_enforcement::add_springs(
-      surface, law, epsilon, multipliers, additions);
+      surface, law, tractions, epsilon, multipliers, additions);
     additions.key = {surface.active_set_signature(), epsilon};
   }
 

@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <signorini/contact/condition_enforcement.h>
@@ -94,13 +95,76 @@ namespace signorini
             additions.constraints.push_back(std::move(line));
           }
       }
+      /** The force equations E f = values of @p node, whose conditions are
+       * the lines @p first ... of @p additions: on the node's free dofs F
+       * that no line solves for, as f_F + V f_S = E_F^-1 values (f_S on the
+       * lines' dofs S, V = E_F^-1 E_S): the lines' test weights V and
+       * forces at F. Returns whether it could (as many equations as F, E_F
+       * regular); if not, F keeps the force balance. */
+      template <int dim>
+      bool
+      add_equations(const ContactNode<dim>               &node,
+                    const std::vector<NodeEquation<dim>> &equations,
+                    const std::size_t                     first,
+                    SystemAdditions<dim>                 &additions)
+      {
+        std::vector<unsigned int> solved, others;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            bool is_solved = false;
+            for (std::size_t l = first; l < additions.constraints.size(); ++l)
+              is_solved =
+                is_solved || additions.constraints[l].dof == node.dofs[d];
+            if (is_solved)
+              solved.push_back(d);
+            else if (node.free[d])
+              others.push_back(d);
+          }
+        const unsigned int k = others.size();
+        if (k == 0 || equations.size() != k)
+          return false;
+        FullMatrix<double> e_f(k, k);
+        for (unsigned int i = 0; i < k; ++i)
+          for (unsigned int j = 0; j < k; ++j)
+            e_f(i, j) = equations[i].direction[others[j]];
+        if (std::abs(e_f.determinant()) < 1e-8)
+          return false;
+        e_f.gauss_jordan();
+        for (std::size_t l = first; l < additions.constraints.size(); ++l)
+          {
+            auto        &line = additions.constraints[l];
+            unsigned int s    = 0;
+            while (node.dofs[s] != line.dof)
+              ++s;
+            line.petrov_galerkin = true;
+            for (unsigned int j = 0; j < k; ++j)
+              {
+                double v = 0.;
+                for (unsigned int i = 0; i < k; ++i)
+                  v += e_f(j, i) * equations[i].direction[s];
+                if (v != 0.)
+                  line.test_entries.emplace_back(node.dofs[others[j]], v);
+              }
+          }
+        if (node.owned)
+          for (unsigned int j = 0; j < k; ++j)
+            {
+              double value = 0.;
+              for (unsigned int i = 0; i < k; ++i)
+                value += e_f(j, i) * equations[i].value;
+              if (value != 0.)
+                additions.forces.push_back({node.dofs[others[j]], value});
+            }
+        return true;
+      }
     } // namespace
 
     template <int dim>
     void
-    add_constraints(const ContactSurface<dim> &surface,
-                    const ContactLaw<dim>     &law,
-                    SystemAdditions<dim>      &additions)
+    add_constraints(const ContactSurface<dim>            &surface,
+                    const ContactLaw<dim>                &law,
+                    const std::vector<NodeTraction<dim>> &tractions,
+                    SystemAdditions<dim>                 &additions)
     {
       // A node with one condition alone on its vertex: one line; the
       // conditions of a corner's nodes (and several of one node) together,
@@ -108,16 +172,35 @@ namespace signorini
       std::map<unsigned int, std::vector<NodeCondition<dim>>> corners;
       std::map<unsigned int, unsigned int>                    corner_node;
       std::vector<NodeCondition<dim>>                         conditions;
+      std::vector<NodeEquation<dim>>                          equations;
+      bool        test_weights = false, forces = false;
       const auto &nodes = surface.nodes();
       for (unsigned int i = 0; i < nodes.size(); ++i)
         {
           const auto &node = nodes[i];
           conditions.clear();
-          law.conditions(node, conditions);
+          equations.clear();
+          law.conditions(node, tractions[i], conditions, equations);
           if (conditions.empty())
             continue;
-          if (node.corner == numbers::invalid_unsigned_int &&
-              conditions.size() == 1)
+          if (!equations.empty() &&
+              node.corner == numbers::invalid_unsigned_int)
+            {
+              // A node with equations alone: its lines, then their test
+              // weights (a law gives a corner's nodes no equations).
+              const std::size_t first = additions.constraints.size();
+              if (conditions.size() == 1)
+                add_line(node, conditions.front(), additions);
+              else
+                add_lines(node, conditions, additions);
+              if (add_equations(node, equations, first, additions))
+                {
+                  test_weights = true;
+                  forces       = forces || node.owned;
+                }
+            }
+          else if (node.corner == numbers::invalid_unsigned_int &&
+                   conditions.size() == 1)
             add_line(node, conditions.front(), additions);
           else
             {
@@ -138,28 +221,38 @@ namespace signorini
         }
       for (const auto &[group, group_conditions] : corners)
         add_lines(nodes[corner_node.at(group)], group_conditions, additions);
+      const MPI_Comm comm = surface.communicator();
+      if (Utilities::MPI::logical_or(test_weights, comm))
+        {
+          additions.has_test_weights = true;
+          additions.symmetric        = false;
+        }
+      additions.has_forces =
+        additions.has_forces || Utilities::MPI::logical_or(forces, comm);
     }
 
     template <int dim>
     void
-    add_springs(const ContactSurface<dim> &surface,
-                const ContactLaw<dim>     &law,
-                const double               epsilon,
-                const std::vector<double> &multipliers,
-                SystemAdditions<dim>      &additions)
+    add_springs(const ContactSurface<dim>            &surface,
+                const ContactLaw<dim>                &law,
+                const std::vector<NodeTraction<dim>> &tractions,
+                const double                          epsilon,
+                const std::vector<double>            &multipliers,
+                SystemAdditions<dim>                 &additions)
     {
       // The spring's force (k (value - d.u)) d, k = m / epsilon: at a
       // normal condition n.u = -gap, the obstacle's push -(k n.u + m gap /
       // epsilon) n on a penetrating node; the augmented Lagrangian adds
       // the multiplier's m lambda n.
       std::vector<NodeCondition<dim>> conditions;
+      std::vector<NodeEquation<dim>>  equations;
       const auto                     &nodes = surface.nodes();
       for (unsigned int i = 0; i < nodes.size(); ++i)
         if (nodes[i].owned)
           {
             const auto &node = nodes[i];
             conditions.clear();
-            law.conditions(node, conditions);
+            law.conditions(node, tractions[i], conditions, equations);
             const double stiffness = node.mass / epsilon;
             for (unsigned int c = 0; c < conditions.size(); ++c)
               {
@@ -190,20 +283,24 @@ namespace signorini
     template void
     add_constraints(const ContactSurface<2> &,
                     const ContactLaw<2> &,
+                    const std::vector<NodeTraction<2>> &,
                     SystemAdditions<2> &);
     template void
     add_constraints(const ContactSurface<3> &,
                     const ContactLaw<3> &,
+                    const std::vector<NodeTraction<3>> &,
                     SystemAdditions<3> &);
     template void
     add_springs(const ContactSurface<2> &,
                 const ContactLaw<2> &,
+                const std::vector<NodeTraction<2>> &,
                 const double,
                 const std::vector<double> &,
                 SystemAdditions<2> &);
     template void
     add_springs(const ContactSurface<3> &,
                 const ContactLaw<3> &,
+                const std::vector<NodeTraction<3>> &,
                 const double,
                 const std::vector<double> &,
                 SystemAdditions<3> &);

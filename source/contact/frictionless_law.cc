@@ -14,24 +14,26 @@ namespace signorini
   template <int dim>
   NodeState
   FrictionlessLaw<dim>::state(const ContactNode<dim> &,
-                              const double sigma) const
+                              const NodeTraction<dim> &traction) const
   {
-    return sigma > 0 ? NodeState::closed : NodeState::open;
+    return traction.sigma > 0 ? NodeState::closed : NodeState::open;
   }
 
   template <int dim>
   double
-  FrictionlessLaw<dim>::complementarity_force(const ContactNode<dim> &node,
-                                              const double sigma) const
+  FrictionlessLaw<dim>::complementarity_force(
+    const ContactNode<dim>  &node,
+    const NodeTraction<dim> &traction) const
   {
-    return node.mass * std::max(0., sigma);
+    return node.mass * std::max(0., traction.sigma);
   }
 
   template <int dim>
   void
-  FrictionlessLaw<dim>::conditions(
-    const ContactNode<dim>          &node,
-    std::vector<NodeCondition<dim>> &conditions) const
+  FrictionlessLaw<dim>::conditions(const ContactNode<dim> &node,
+                                   const NodeTraction<dim> &,
+                                   std::vector<NodeCondition<dim>> &conditions,
+                                   std::vector<NodeEquation<dim>> &) const
   {
     if (!node.in_contact())
       return;

@@ -80,11 +80,10 @@ namespace signorini
   {
     contact_residual.reinit(discretisation.locally_owned_dofs(),
                             discretisation.mpi_communicator());
-    // A path-dependent law counts slip from the first step's start: zero.
     if (law.path_dependent())
-      step_start.reinit(solution);
+      tangential_pressure.reinit(solution);
     else
-      step_start.clear();
+      tangential_pressure.clear();
   }
 
   template <int dim>
@@ -99,7 +98,31 @@ namespace signorini
   NewtonDriver<dim>::start_step()
   {
     if (law.path_dependent())
-      step_start = solution;
+      for (auto &node : surface.nodes())
+        node.reference = node.displacement(solution);
+  }
+
+  template <int dim>
+  NodeTraction<dim>
+  NewtonDriver<dim>::traction(const unsigned int      i,
+                              const ContactNode<dim> &node,
+                              const bool              for_state) const
+  {
+    NodeTraction<dim> traction;
+    const double      gap      = surface.deformed_gap(node, solution);
+    const double      pressure = contact_pressure(node.scalar_dof);
+    traction.sigma             = for_state ?
+                                   formulation.state_pressure(i, node, gap, pressure) :
+                                   formulation.residual_pressure(i, node, gap, pressure);
+    if (law.path_dependent())
+      {
+        Tensor<1, dim> q;
+        for (unsigned int d = 0; d < dim; ++d)
+          q[d] = tangential_pressure(node.dofs[d]);
+        traction.tangential =
+          formulation.tangential_traction(i, node, node.slip(solution), q);
+      }
+    return traction;
   }
 
   template <int dim>
@@ -111,16 +134,15 @@ namespace signorini
     // that a body held only by the obstacle is supported in the first
     // solve.
     auto &nodes = surface.nodes();
+    tractions.resize(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         const double gap = surface.deformed_gap(nodes[i], solution);
-        const auto   state =
-          law.state(nodes[i],
-                    formulation.state_pressure(
-                      i, nodes[i], gap, contact_pressure(nodes[i].scalar_dof)));
+        tractions[i]     = traction(i, nodes[i], true);
+        const auto state = law.state(nodes[i], tractions[i]);
         nodes[i].state =
           state == NodeState::open && gap <= surface.touching_tolerance() ?
-            NodeState::closed :
+            law.contact_state() :
             state;
       }
   }
@@ -132,14 +154,11 @@ namespace signorini
     TimerOutput::Scope t(timer, "Active set: update");
     unsigned int       changes = 0;
     auto              &nodes   = surface.nodes();
+    tractions.resize(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        const auto state = law.state(
-          nodes[i],
-          formulation.state_pressure(i,
-                                     nodes[i],
-                                     surface.deformed_gap(nodes[i], solution),
-                                     contact_pressure(nodes[i].scalar_dof)));
+        tractions[i]     = traction(i, nodes[i], true);
+        const auto state = law.state(nodes[i], tractions[i]);
         if (nodes[i].owned && state != nodes[i].state)
           ++changes;
         nodes[i].state = state;
@@ -173,7 +192,7 @@ namespace signorini
       {
         const double u = node.normal_displacement(solution);
         node.state     = u < 0 && node.gap / -u <= theta_min * (1. + 1e-6) ?
-                           NodeState::closed :
+                           law.contact_state() :
                            NodeState::open;
         changes += node.owned && node.in_contact() ? 1 : 0;
       }
@@ -193,33 +212,73 @@ namespace signorini
     // combines the force balance at all other free dofs with the
     // complementarity function at the contact nodes (the law's, of the
     // formulation's augmented pressure).
+    // With friction, the tangential part of the nodal force at a node
+    // whose law binds it is the obstacle's too, and complementarity of the
+    // law's tangential force replaces its balance.
     const MPI_Comm comm = discretisation.mpi_communicator();
     VectorType     owned_pressure(discretisation.locally_owned_dofs(), comm);
-    VectorType     balance(contact_residual);
-    double         complementarity = 0., contact_force = 0.;
-    const auto    &nodes  = surface.nodes();
-    const auto     lambda = surface.normal_forces(contact_residual);
+    VectorType     owned_tangential;
+    const bool     friction = law.path_dependent();
+    if (friction)
+      owned_tangential.reinit(discretisation.locally_owned_dofs(), comm);
+    VectorType  balance(contact_residual);
+    double      complementarity = 0., contact_force = 0.;
+    const auto &nodes  = surface.nodes();
+    const auto  lambda = surface.normal_forces(contact_residual);
     for (unsigned int i = 0; i < nodes.size(); ++i)
       if (nodes[i].owned)
         {
-          const auto  &node     = nodes[i];
-          const double p        = node.mass > 0 ? lambda[i] / node.mass : 0.;
-          const double expected = law.complementarity_force(
-            node,
-            formulation.residual_pressure(
-              i, node, surface.deformed_gap(node, solution), p));
+          const auto  &node = nodes[i];
+          const double p    = node.mass > 0 ? lambda[i] / node.mass : 0.;
           owned_pressure(node.scalar_dof) = p;
-          // The force balance along the obstacle's surface remains.
+          Tensor<1, dim> force;
           for (unsigned int d = 0; d < dim; ++d)
             if (node.free[d])
-              balance(node.dofs[d]) =
-                balance(node.dofs[d]) - lambda[i] * node.normal[d];
-          complementarity += (lambda[i] - expected) * (lambda[i] - expected);
-          contact_force += lambda[i] * lambda[i];
+              force[d] = contact_residual(node.dofs[d]);
+          const Tensor<1, dim> tangential =
+            friction ? node.tangential(force) : Tensor<1, dim>();
+          if (friction && node.mass > 0)
+            for (unsigned int d = 0; d < dim; ++d)
+              if (node.free[d])
+                owned_tangential(node.dofs[d]) = tangential[d] / node.mass;
         }
     owned_pressure.compress(VectorOperation::insert);
-    balance.compress(VectorOperation::insert);
     contact_pressure = owned_pressure;
+    if (friction)
+      {
+        owned_tangential.compress(VectorOperation::insert);
+        tangential_pressure = owned_tangential;
+      }
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (nodes[i].owned)
+        {
+          const auto  &node          = nodes[i];
+          const auto   node_traction = traction(i, node, false);
+          const double expected =
+            law.complementarity_force(node, node_traction);
+          // The force balance along the obstacle's surface remains, unless
+          // the law binds the tangential force.
+          const auto expected_tangential =
+            law.tangential_force(node, node_traction);
+          Tensor<1, dim> tangential;
+          if (expected_tangential)
+            for (unsigned int d = 0; d < dim; ++d)
+              tangential[d] = tangential_pressure(node.dofs[d]) * node.mass;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (node.free[d])
+              balance(node.dofs[d]) = balance(node.dofs[d]) -
+                                      lambda[i] * node.normal[d] -
+                                      tangential[d];
+          complementarity += (lambda[i] - expected) * (lambda[i] - expected);
+          contact_force += lambda[i] * lambda[i];
+          if (expected_tangential)
+            {
+              complementarity +=
+                (tangential - *expected_tangential).norm_square();
+              contact_force += tangential.norm_square();
+            }
+        }
+    balance.compress(VectorOperation::insert);
 
     const double balance_norm = balance.l2_norm();
     complementarity           = Utilities::MPI::sum(complementarity, comm);
@@ -235,7 +294,8 @@ namespace signorini
   NewtonDriver<dim>::assemble_newton_system()
   {
     additions = SystemAdditions<dim>();
-    formulation.linearise(surface, law, additions);
+    tractions.resize(surface.nodes().size());
+    formulation.linearise(surface, law, tractions, additions);
   }
 
   template <int dim>
@@ -387,6 +447,13 @@ namespace signorini
   NewtonDriver<dim>::pressure() const
   {
     return contact_pressure;
+  }
+
+  template <int dim>
+  const typename NewtonDriver<dim>::VectorType &
+  NewtonDriver<dim>::tangential_traction() const
+  {
+    return tangential_pressure;
   }
 
   template <int dim>

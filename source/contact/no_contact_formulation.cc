@@ -46,6 +46,7 @@ namespace signorini
   void
   NoContactFormulation<dim>::linearise(const ContactSurface<dim> &surface,
                                        const ContactLaw<dim> &,
+                                       const std::vector<NodeTraction<dim>> &,
                                        SystemAdditions<dim> &additions) const
   {
     additions.key = {surface.active_set_signature(), 0.};

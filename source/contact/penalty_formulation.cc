@@ -121,11 +121,14 @@ namespace signorini
 
   template <int dim>
   void
-  PenaltyFormulation<dim>::linearise(const ContactSurface<dim> &surface,
-                                     const ContactLaw<dim>     &law,
-                                     SystemAdditions<dim>      &additions) const
+  PenaltyFormulation<dim>::linearise(
+    const ContactSurface<dim>            &surface,
+    const ContactLaw<dim>                &law,
+    const std::vector<NodeTraction<dim>> &tractions,
+    SystemAdditions<dim>                 &additions) const
   {
-    condition_enforcement::add_springs(surface, law, epsilon, {}, additions);
+    condition_enforcement::add_springs(
+      surface, law, tractions, epsilon, {}, additions);
     additions.key = {surface.active_set_signature(), epsilon};
   }
 

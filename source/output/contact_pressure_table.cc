@@ -18,18 +18,22 @@ namespace signorini
                                const ContactSurface<dim>           &surface,
                                const TrilinosWrappers::MPI::Vector &pressure,
                                const TrilinosWrappers::MPI::Vector &solution,
-                               const MPI_Comm mpi_communicator)
+                               const MPI_Comm mpi_communicator,
+                               const TrilinosWrappers::MPI::Vector *tangential)
   {
     // x, y[, z], pressure, gap, obstacle, state, then the node's frame
     // (normal, tangents): a node at a corner has one row per obstacle it
-    // touches.
-    constexpr unsigned int frame = dim + 4;
-    using Row                    = std::array<double, frame + dim * dim>;
-    std::vector<Row> rows;
+    // touches; with friction, the shear traction and the slip of the load
+    // step in the node's tangent coordinates.
+    constexpr unsigned int frame    = dim + 4;
+    constexpr unsigned int friction = frame + dim * dim;
+    using Row                  = std::array<double, friction + 2 * (dim - 1)>;
+    const unsigned int columns = tangential ? Row().size() : friction;
+    std::vector<Row>   rows;
     for (const auto &node : surface.nodes())
       if (node.owned)
         {
-          Row row;
+          Row row = {};
           for (unsigned int d = 0; d < dim; ++d)
             row[d] = node.position[d];
           row[dim]     = pressure(node.scalar_dof);
@@ -42,6 +46,18 @@ namespace signorini
               row[frame + d] = node.normal[d] + 0.;
               for (unsigned int t = 0; t < dim - 1; ++t)
                 row[frame + (t + 1) * dim + d] = node.tangents[t][d] + 0.;
+            }
+          if (tangential)
+            {
+              Tensor<1, dim> q;
+              for (unsigned int d = 0; d < dim; ++d)
+                q[d] = (*tangential)(node.dofs[d]);
+              const auto slip = node.slip(solution);
+              for (unsigned int t = 0; t < dim - 1; ++t)
+                {
+                  row[friction + t]           = q * node.tangents[t] + 0.;
+                  row[friction + dim - 1 + t] = slip * node.tangents[t] + 0.;
+                }
             }
           rows.push_back(row);
         }
@@ -57,6 +73,9 @@ namespace signorini
       out << (dim == 2 ? "x,y" : "x,y,z") << ",pressure,gap,obstacle,state"
           << (dim == 2 ? ",n_x,n_y,t_x,t_y" :
                          ",n_x,n_y,n_z,t1_x,t1_y,t1_z,t2_x,t2_y,t2_z")
+          << (!tangential ? "" :
+              dim == 2    ? ",shear,slip" :
+                            ",shear_t1,shear_t2,slip_t1,slip_t2")
           << '\n';
       char       number[32];
       const auto write = [&](const double value, const char separator) {
@@ -69,8 +88,8 @@ namespace signorini
             write(row[c], ',');
           out << static_cast<unsigned int>(row[dim + 2]) << ','
               << static_cast<unsigned int>(row[dim + 3]) << ',';
-          for (unsigned int c = frame; c < row.size(); ++c)
-            write(row[c], c + 1 < row.size() ? ',' : '\n');
+          for (unsigned int c = frame; c < columns; ++c)
+            write(row[c], c + 1 < columns ? ',' : '\n');
         }
     });
   }
@@ -80,11 +99,13 @@ namespace signorini
                                const ContactSurface<2> &,
                                const TrilinosWrappers::MPI::Vector &,
                                const TrilinosWrappers::MPI::Vector &,
-                               const MPI_Comm);
+                               const MPI_Comm,
+                               const TrilinosWrappers::MPI::Vector *);
   template void
   write_contact_pressure_table(const std::string &,
                                const ContactSurface<3> &,
                                const TrilinosWrappers::MPI::Vector &,
                                const TrilinosWrappers::MPI::Vector &,
-                               const MPI_Comm);
+                               const MPI_Comm,
+                               const TrilinosWrappers::MPI::Vector *);
 } // namespace signorini

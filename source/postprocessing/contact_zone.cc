@@ -58,7 +58,8 @@ namespace signorini
   evaluate_contact_zone(const Discretisation<dim>           &discretisation,
                         const ContactSurface<dim>           &surface,
                         const TrilinosWrappers::MPI::Vector &pressure,
-                        const Reference<dim>                &reference)
+                        const Reference<dim>                &reference,
+                        const TrilinosWrappers::MPI::Vector *tangential)
   {
     const MPI_Comm     comm        = discretisation.mpi_communicator();
     const auto        &obstacles   = surface.obstacles();
@@ -74,6 +75,7 @@ namespace signorini
     std::vector<double>         peak(n_obstacles, none);
     std::vector<Tensor<1, dim>> mean_normal(n_obstacles);
     std::vector<unsigned int>   n_active(n_obstacles, 0);
+    Tensor<1, dim>              friction_force;
     for (const auto &node : nodes)
       if (node.owned)
         {
@@ -82,6 +84,14 @@ namespace signorini
           auto &contact       = zone.obstacles[node.obstacle];
           peak[node.obstacle] = std::max(peak[node.obstacle], p);
           contact.force += p * node.mass * node.normal;
+          // With friction, the obstacle's tangential nodal force too.
+          if (tangential)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double q = (*tangential)(node.dofs[d]) * node.mass;
+                contact.force[d] += q;
+                friction_force[d] += q;
+              }
           for (unsigned int d = 0; d < dim; ++d)
             if (!node.free[d] && node.normal[d] != 0.)
               {
@@ -270,6 +280,8 @@ namespace signorini
             }
     zone.integrated_pressure = Utilities::MPI::sum(integral, comm);
     zone.pressure_resultant  = Utilities::MPI::sum(resultant, comm);
+    if (tangential)
+      zone.pressure_resultant += Utilities::MPI::sum(friction_force, comm);
     for (unsigned int k = 0; k < n_obstacles; ++k)
       {
         zone.obstacles[k].contact_area = Utilities::MPI::sum(area[k], comm);
@@ -323,12 +335,14 @@ namespace signorini
   evaluate_contact_zone(const Discretisation<2> &,
                         const ContactSurface<2> &,
                         const TrilinosWrappers::MPI::Vector &,
-                        const Reference<2> &);
+                        const Reference<2> &,
+                        const TrilinosWrappers::MPI::Vector *);
   template ContactZone<3>
   evaluate_contact_zone(const Discretisation<3> &,
                         const ContactSurface<3> &,
                         const TrilinosWrappers::MPI::Vector &,
-                        const Reference<3> &);
+                        const Reference<3> &,
+                        const TrilinosWrappers::MPI::Vector *);
   template void
   add_contact_columns(StatisticsRow &,
                       const ContactZone<2> &,

@@ -65,13 +65,15 @@ namespace signorini
     row.add_count("iterations", newton.iterations());
 
     // The obstacle's force on the contact nodes, K u - f there.
-    unsigned int   active      = 0;
+    unsigned int   active = 0, sticking = 0, slipping = 0;
     double         penetration = 0.;
     Tensor<1, dim> contact_force;
     for (const auto &node : contact_surface.nodes())
       if (node.owned)
         {
           active += node.in_contact() ? 1 : 0;
+          sticking += node.state == NodeState::stick ? 1 : 0;
+          slipping += node.state == NodeState::slip ? 1 : 0;
           // A vertex's force once, at its first node.
           if (node.primary)
             for (unsigned int d = 0; d < dim; ++d)
@@ -84,10 +86,13 @@ namespace signorini
     // Where a support fixes a component of a contact node, K u - f there
     // is the support's reaction and the obstacle's force together: the
     // obstacle's share is its own.
-    auto zone = evaluate_contact_zone(discretisation,
-                                      contact_surface,
-                                      pressure,
-                                      parameters.reference);
+    const auto &tangential = newton.tangential_traction();
+    auto        zone =
+      evaluate_contact_zone(discretisation,
+                            contact_surface,
+                            pressure,
+                            parameters.reference,
+                            tangential.size() > 0 ? &tangential : nullptr);
     if (zone.supported)
       contact_force += zone.supported_force;
     // The radial forces of a whole revolution cancel: its resultants are
@@ -97,6 +102,35 @@ namespace signorini
       contact_force[0] = 0.;
     penetration = Utilities::MPI::max(penetration, mpi_communicator);
     row.add_count("active_set", active);
+    // With friction, how many of them stick and slip, the extent of the
+    // sticking nodes along their first tangent, and the largest shear
+    // traction.
+    if (law->path_dependent())
+      {
+        row.add_count("stick", Utilities::MPI::sum(sticking, mpi_communicator));
+        row.add_count("slip", Utilities::MPI::sum(slipping, mpi_communicator));
+        double low = std::numeric_limits<double>::max(), high = -low,
+               max_shear  = 0.;
+        const auto &shear = newton.tangential_traction();
+        for (const auto &node : contact_surface.nodes())
+          if (node.owned)
+            {
+              Tensor<1, dim> q;
+              for (unsigned int d = 0; d < dim; ++d)
+                q[d] = shear(node.dofs[d]);
+              max_shear = std::max(max_shear, q.norm());
+              if (node.state == NodeState::stick)
+                {
+                  const double s = node.tangents[0] * node.position;
+                  low            = std::min(low, s);
+                  high           = std::max(high, s);
+                }
+            }
+        low  = Utilities::MPI::min(low, mpi_communicator);
+        high = Utilities::MPI::max(high, mpi_communicator);
+        row.add("stick_width", high >= low ? high - low : 0.);
+        row.add("max_shear", Utilities::MPI::max(max_shear, mpi_communicator));
+      }
     formulation->report(row, pcout);
     for (unsigned int d = 0; d < dim; ++d)
       row.add(std::string("contact_force_") + axes[d], contact_force[d]);
@@ -309,7 +343,10 @@ namespace signorini
                                      contact_surface,
                                      pressure,
                                      solution,
-                                     mpi_communicator);
+                                     mpi_communicator,
+                                     newton.tangential_traction().size() > 0 ?
+                                       &newton.tangential_traction() :
+                                       nullptr);
       });
   }
 

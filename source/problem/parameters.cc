@@ -75,6 +75,7 @@ namespace signorini
         BoundaryConditions<3>::declare_parameters(prm);
         ObstacleParameters<3>::declare_parameters(prm);
       }
+    FrictionParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     Refinement::declare_parameters(prm);
@@ -123,11 +124,20 @@ namespace signorini
     boundary_conditions.parse_parameters(prm);
     obstacle.parse_parameters(prm, folders);
     contact.parse_parameters(prm);
+    friction.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
+    std::vector<unsigned int> obstacle_numbers;
+    for (const auto &description : obstacle.obstacles)
+      obstacle_numbers.push_back(description.number);
+    friction.check(obstacle_numbers,
+                   ContactParameters::methods().name(contact.method),
+                   contact.method == ContactParameters::Method::active_set,
+                   linear_solver.type ==
+                     LinearSolverParameters::Type::matrix_free);
     if (material.axisymmetric())
       {
         if (dim != 2)

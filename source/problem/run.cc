@@ -101,7 +101,13 @@ namespace signorini
       std::vector<HeldDirection<dim>> contact_directions;
       for (const auto &node : contact_surface.nodes())
         if (node.owned)
-          contact_directions.push_back({node.position, node.normal});
+          {
+            contact_directions.push_back({node.position, node.normal});
+            // Friction holds the body along the node's tangents too.
+            if (law->frictional(node))
+              for (const auto &tangent : node.tangents)
+                contact_directions.push_back({node.position, tangent});
+          }
       const bool supports_hold =
         check_rigid_motions_held(discretisation,
                                  contact_directions,

@@ -33,14 +33,16 @@ namespace signorini
                                                parameters.linear_solver,
                                                parameters.contact.remedies,
                                                parameters.output.verbose,
-                                               false,
+                                               parameters.friction.any(),
                                                pcout,
                                                timer))
     , obstacle(create_obstacles(parameters.obstacle))
     , contact_surface(parameters.obstacle.contact_ids,
                       *obstacle,
                       parameters.contact.acts())
-    , law(create_contact_law<dim>(parameters.contact))
+    , law(create_contact_law<dim>(parameters.contact,
+                                  parameters.friction,
+                                  parameters.obstacle))
     , formulation(
         create_contact_formulation<dim>(parameters.contact,
                                         parameters.material.young_modulus,

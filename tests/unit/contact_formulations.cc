@@ -132,7 +132,9 @@ namespace
       surface =
         std::make_unique<ContactSurface<2>>(parameters.obstacle.contact_ids,
                                             *obstacle);
-      law = create_contact_law<2>(parameters.contact);
+      law = create_contact_law<2>(parameters.contact,
+                                  parameters.friction,
+                                  parameters.obstacle);
       formulation =
         create_contact_formulation<2>(parameters.contact,
                                       parameters.material.young_modulus,

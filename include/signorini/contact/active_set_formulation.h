@@ -39,9 +39,16 @@ namespace signorini
                       const double            pressure) const override;
 
     void
-    linearise(const ContactSurface<dim> &surface,
-              const ContactLaw<dim>     &law,
-              SystemAdditions<dim>      &additions) const override;
+    linearise(const ContactSurface<dim>            &surface,
+              const ContactLaw<dim>                &law,
+              const std::vector<NodeTraction<dim>> &tractions,
+              SystemAdditions<dim>                 &additions) const override;
+
+    dealii::Tensor<1, dim>
+    tangential_traction(const unsigned int            i,
+                        const ContactNode<dim>       &node,
+                        const dealii::Tensor<1, dim> &slip,
+                        const dealii::Tensor<1, dim> &traction) const override;
 
     std::string
     break_cycle() override;
@@ -59,6 +66,8 @@ namespace signorini
     /** Cycle breaking: update by the signs of pressure and gap alone, for
      * the rest of the cycle. */
     bool sign_rule = false;
+    /** Linearisations with slipping nodes: each a matrix of its own. */
+    mutable std::size_t linearisations = 0;
   };
 } // namespace signorini
 

@@ -43,9 +43,10 @@ namespace signorini
                       const double            pressure) const override;
 
     void
-    linearise(const ContactSurface<dim> &surface,
-              const ContactLaw<dim>     &law,
-              SystemAdditions<dim>      &additions) const override;
+    linearise(const ContactSurface<dim>            &surface,
+              const ContactLaw<dim>                &law,
+              const std::vector<NodeTraction<dim>> &tractions,
+              SystemAdditions<dim>                 &additions) const override;
 
     std::string
     failure_hint() const override;

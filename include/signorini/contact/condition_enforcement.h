@@ -22,28 +22,37 @@ namespace signorini
      * many of the vertex's free components as make the system best
      * conditioned. For every node a process knows; with constraint springs
      * (d d^T, scaled by the diagonal at the node's scalar dof) on the owned
-     * nodes, for the multigrid's coarser levels.
+     * nodes, for the multigrid's coarser levels. A node's force equations
+     * (NodeEquation, with @p tractions: each node's of its last state
+     * update) replace the force balance along its free components that no
+     * line solves for: its lines get test weights of their own and the
+     * equations' values are forces there (the system is then not
+     * symmetric).
      */
     template <int dim>
     void
-    add_constraints(const ContactSurface<dim> &surface,
-                    const ContactLaw<dim>     &law,
-                    SystemAdditions<dim>      &additions);
+    add_constraints(const ContactSurface<dim>            &surface,
+                    const ContactLaw<dim>                &law,
+                    const std::vector<NodeTraction<dim>> &tractions,
+                    SystemAdditions<dim>                 &additions);
 
     /**
      * By springs: each condition d.u = value of an owned node a spring of
      * stiffness m / @p epsilon [N/mm] pulling towards it, the block
      * (m / epsilon) d d^T with the right-hand side (m / epsilon) value d;
      * with the force m lambda_i d of the node's first condition where
-     * @p multipliers (indexed like the nodes, [MPa]) is not empty.
+     * @p multipliers (indexed like the nodes, [MPa]) is not empty. (Force
+     * equations are not enforced by springs: the laws with them need the
+     * exact enforcement.)
      */
     template <int dim>
     void
-    add_springs(const ContactSurface<dim> &surface,
-                const ContactLaw<dim>     &law,
-                const double               epsilon,
-                const std::vector<double> &multipliers,
-                SystemAdditions<dim>      &additions);
+    add_springs(const ContactSurface<dim>            &surface,
+                const ContactLaw<dim>                &law,
+                const std::vector<NodeTraction<dim>> &tractions,
+                const double                          epsilon,
+                const std::vector<double>            &multipliers,
+                SystemAdditions<dim>                 &additions);
   } // namespace condition_enforcement
 } // namespace signorini
 

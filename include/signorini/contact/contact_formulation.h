@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace signorini
 {
@@ -65,12 +66,31 @@ namespace signorini
                       const double            gap,
                       const double            pressure) const = 0;
 
-    /** Adds the @p law's conditions of the nodes of @p surface in contact
-     * to @p additions, as this formulation enforces them. */
+    /** The augmented tangential traction [MPa] of node @p i, @p node, from
+     * its slip @p slip [mm] of the load step and the obstacle's tangential
+     * traction @p traction [MPa] on it (vectors in its tangent plane), from
+     * which a law with friction decides its state and its tangential
+     * force. Only formulations that supports_friction() are asked. */
+    virtual dealii::Tensor<1, dim>
+    tangential_traction(const unsigned int            i,
+                        const ContactNode<dim>       &node,
+                        const dealii::Tensor<1, dim> &slip,
+                        const dealii::Tensor<1, dim> &traction) const
+    {
+      (void)i;
+      (void)node;
+      (void)slip;
+      return traction;
+    }
+
+    /** Adds the @p law's conditions and equations of the nodes of
+     * @p surface in contact (with their @p tractions of the last state
+     * update) to @p additions, as this formulation enforces them. */
     virtual void
-    linearise(const ContactSurface<dim> &surface,
-              const ContactLaw<dim>     &law,
-              SystemAdditions<dim>      &additions) const = 0;
+    linearise(const ContactSurface<dim>            &surface,
+              const ContactLaw<dim>                &law,
+              const std::vector<NodeTraction<dim>> &tractions,
+              SystemAdditions<dim>                 &additions) const = 0;
 
     /** Remedy for an active set that returned to an earlier one: changes
      * the update rule and describes the change, or returns an empty text

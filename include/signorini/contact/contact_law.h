@@ -5,8 +5,11 @@
 
 #include <signorini/contact/contact_parameters.h>
 #include <signorini/contact/contact_surface.h>
+#include <signorini/contact/friction_parameters.h>
+#include <signorini/contact/obstacle_parameters.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,7 +17,8 @@ namespace signorini
 {
   /**
    * A kinematic condition on one contact node: direction . u = value [mm]
-   * at the node's dofs (the normal of a node on the obstacle: n.u = -gap).
+   * at the node's dofs (the normal of a node on the obstacle: n.u = -gap;
+   * a sticking node's tangent: t.u = t.u_reference).
    */
   template <int dim>
   struct NodeCondition
@@ -27,16 +31,44 @@ namespace signorini
   };
 
   /**
+   * A force equation on one contact node: direction . f = value [N], f
+   * the obstacle's nodal force on the node (a slipping node's tangential
+   * force, bound to its normal force by Coulomb's law: (t - mu d n) . f =
+   * 0). It replaces the force balance along the node's directions that no
+   * condition holds.
+   */
+  template <int dim>
+  struct NodeEquation
+  {
+    dealii::Tensor<1, dim> direction;
+    double                 value;
+  };
+
+  /**
+   * What a node's law decides from: the formulation's augmented normal
+   * pressure sigma [MPa] (its estimate of the contact pressure plus its
+   * penalty of the penetration: the active set's p - c gap, a penalty's
+   * -gap / epsilon, the augmented Lagrangian's lambda - gap / epsilon),
+   * and, for a law with friction, the augmented tangential traction zeta
+   * [MPa] in the node's tangent plane (the active set's q - c s: the
+   * obstacle's tangential traction q on the body and the slip s of the
+   * load step).
+   */
+  template <int dim>
+  struct NodeTraction
+  {
+    double                 sigma = 0.;
+    dealii::Tensor<1, dim> tangential;
+  };
+
+  /**
    * The law of a contact node, independent of how it is enforced (the
-   * ContactFormulation): which state the node's forces put it in, the
-   * nodal force complementarity asks of it, and the kinematic conditions of
-   * its state. The formulation gives the law the node's augmented normal
-   * pressure sigma [MPa]: its estimate of the contact pressure plus its
-   * penalty of the penetration (the active set: p - c gap; a penalty:
-   * -gap / epsilon; the augmented Lagrangian: lambda - gap / epsilon).
+   * ContactFormulation): which state the node's tractions put it in, the
+   * nodal forces complementarity asks of it, and the kinematic conditions
+   * and force equations of its state.
    *
-   * Implementations: FrictionlessLaw. A new law is a file beside it and a
-   * line in create_contact_law().
+   * Implementations: FrictionlessLaw, FrictionLaw (Coulomb, Tresca). A new
+   * law is a file beside them and a line in create_contact_law().
    */
   template <int dim>
   class ContactLaw
@@ -50,35 +82,73 @@ namespace signorini
 
     /** Whether a node's law depends on its path (friction: the slip of a
      * load step is counted from the step's start), so that the Newton
-     * iteration keeps the displacement at the start of each load step. */
+     * iteration keeps each node's displacement at the start of a step and
+     * its tangential traction. */
     virtual bool
     path_dependent() const
     {
       return false;
     }
 
-    /** The state of @p node for the augmented normal pressure @p sigma
-     * [MPa]. */
-    virtual NodeState
-    state(const ContactNode<dim> &node, const double sigma) const = 0;
+    /** Whether @p node, in contact, resists tangential motion (friction):
+     * it then holds the body along its tangents too. */
+    virtual bool
+    frictional(const ContactNode<dim> &node) const
+    {
+      (void)node;
+      return false;
+    }
 
-    /** The nodal contact force [N] that complementarity asks of the owned
-     * @p node with the augmented normal pressure @p sigma [MPa]. */
+    /** The state of a node that comes into contact before its forces are
+     * known (it touches, or is where contact begins). */
+    virtual NodeState
+    contact_state() const
+    {
+      return NodeState::closed;
+    }
+
+    /** The state of @p node for the augmented tractions @p traction. */
+    virtual NodeState
+    state(const ContactNode<dim>  &node,
+          const NodeTraction<dim> &traction) const = 0;
+
+    /** The obstacle's normal force [N] that complementarity asks of the
+     * owned @p node with the augmented tractions @p traction. */
     virtual double
-    complementarity_force(const ContactNode<dim> &node,
-                          const double            sigma) const = 0;
+    complementarity_force(const ContactNode<dim>  &node,
+                          const NodeTraction<dim> &traction) const = 0;
+
+    /** The obstacle's tangential force [N] that complementarity asks of
+     * the owned @p node, or none where the law does not bind it (without
+     * friction: it is then part of the force balance). */
+    virtual std::optional<dealii::Tensor<1, dim>>
+    tangential_force(const ContactNode<dim>  &node,
+                     const NodeTraction<dim> &traction) const
+    {
+      (void)node;
+      (void)traction;
+      return std::nullopt;
+    }
 
     /** Appends the kinematic conditions of @p node in its state (none for
-     * an open node) to @p conditions. */
+     * an open node) to @p conditions and its force equations to
+     * @p equations; @p traction: the node's tractions of its last state
+     * update (a slip's direction). */
     virtual void
     conditions(const ContactNode<dim>          &node,
-               std::vector<NodeCondition<dim>> &conditions) const = 0;
+               const NodeTraction<dim>         &traction,
+               std::vector<NodeCondition<dim>> &conditions,
+               std::vector<NodeEquation<dim>>  &equations) const = 0;
   };
 
-  /** The law the contact parameters name. */
+  /** The law of the obstacles' friction (frictionless where none has a
+   * friction coefficient or a Tresca slip bound), for parameters that
+   * FrictionParameters::check() accepted. */
   template <int dim>
   std::unique_ptr<ContactLaw<dim>>
-  create_contact_law(const ContactParameters &parameters);
+  create_contact_law(const ContactParameters       &contact,
+                     const FrictionParameters      &friction,
+                     const ObstacleParameters<dim> &obstacles);
 } // namespace signorini
 
 #endif

@@ -22,12 +22,15 @@
 
 namespace signorini
 {
-  /** Where a contact node stands: off the obstacle, or on it (closed: no
-   * friction; friction's stick and slip will join it). */
+  /** Where a contact node stands: off the obstacle, or on it: closed
+   * (frictionless), sticking or slipping (friction). Written as 0, 1, 2, 3
+   * in the output. */
   enum class NodeState : unsigned char
   {
     open,
-    closed
+    closed,
+    stick,
+    slip
   };
 
   /**
@@ -59,6 +62,10 @@ namespace signorini
     std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
     /** Initial gap to the obstacle along the normal [mm]. */
     double gap;
+    /** The node's displacement at the start of the load step [mm], from
+     * which its slip is counted (a path-dependent law's; zero before the
+     * first step). */
+    dealii::Tensor<1, dim> reference;
     /** Which obstacle the node faces (its index in the ObstacleSet). */
     unsigned int obstacle = 0;
     /** Lumped contact-boundary mass, integral of the shape function over
@@ -82,6 +89,31 @@ namespace signorini
     in_contact() const
     {
       return state != NodeState::open;
+    }
+
+    /** The node's displacement in @p u [mm]. */
+    dealii::Tensor<1, dim>
+    displacement(const dealii::TrilinosWrappers::MPI::Vector &u) const
+    {
+      dealii::Tensor<1, dim> value;
+      for (unsigned int d = 0; d < dim; ++d)
+        value[d] = u(dofs[d]);
+      return value;
+    }
+
+    /** The tangential part of @p v: v - (v.n) n. */
+    dealii::Tensor<1, dim>
+    tangential(const dealii::Tensor<1, dim> &v) const
+    {
+      return v - (v * normal) * normal;
+    }
+
+    /** The slip of the load step [mm]: the tangential part of the
+     * displacement @p u since the reference. */
+    dealii::Tensor<1, dim>
+    slip(const dealii::TrilinosWrappers::MPI::Vector &u) const
+    {
+      return tangential(displacement(u) - reference);
     }
 
     /** n.u at the node, for the displacement @p u [mm]. */
@@ -141,6 +173,13 @@ namespace signorini
     /** The obstacles. */
     const ObstacleSet<dim> &
     obstacles() const;
+
+    /** The communicator of the mesh the nodes are on. */
+    MPI_Comm
+    communicator() const
+    {
+      return mpi_communicator;
+    }
 
     /** The boundary ids that may touch an obstacle. */
     const std::set<dealii::types::boundary_id> &

@@ -19,15 +19,18 @@ namespace signorini
     name() const override;
 
     NodeState
-    state(const ContactNode<dim> &node, const double sigma) const override;
+    state(const ContactNode<dim>  &node,
+          const NodeTraction<dim> &traction) const override;
 
     double
-    complementarity_force(const ContactNode<dim> &node,
-                          const double            sigma) const override;
+    complementarity_force(const ContactNode<dim>  &node,
+                          const NodeTraction<dim> &traction) const override;
 
     void
     conditions(const ContactNode<dim>          &node,
-               std::vector<NodeCondition<dim>> &conditions) const override;
+               const NodeTraction<dim>         &traction,
+               std::vector<NodeCondition<dim>> &conditions,
+               std::vector<NodeEquation<dim>>  &equations) const override;
   };
 } // namespace signorini
 

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <utility>
+#include <vector>
 
 namespace signorini
 {
@@ -63,9 +64,9 @@ namespace signorini
     void
     start_cycle();
 
-    /** Starts a load step: the current displacement becomes the reference
-     * from which the step's tangential slip is counted (the state of the
-     * previous step; zero on the first). */
+    /** Starts a load step: the current displacement becomes each contact
+     * node's reference, from which its slip in the step is counted (the
+     * state of the previous step; zero on the first). */
     void
     start_step();
 
@@ -108,6 +109,12 @@ namespace signorini
     const VectorType &
     pressure() const;
 
+    /** The obstacle's tangential traction [MPa] on the body at the contact
+     * nodes' dofs (a vector in each node's tangent plane), where the law
+     * has friction; empty otherwise. */
+    const VectorType &
+    tangential_traction() const;
+
     /** K u - f with the contact dofs free: the obstacle's nodal force [N]. */
     const VectorType &
     residual() const;
@@ -134,6 +141,15 @@ namespace signorini
     double
     evaluate_residual();
 
+    /** The law's tractions of node @p i, @p node from the current
+     * displacement and pressures: the formulation's augmented pressure
+     * (for the state, with its touching tolerance and cycle breaking, or
+     * for the residual) and, with friction, tangential traction. */
+    NodeTraction<dim>
+    traction(const unsigned int      i,
+             const ContactNode<dim> &node,
+             const bool              for_state) const;
+
     /** Sets the nodes' states by the law; returns the number of changes. */
     unsigned int
     update_active_set();
@@ -144,22 +160,25 @@ namespace signorini
     unsigned int
     activate_first_contact();
 
-    const Discretisation<dim>  &discretisation;
-    ElasticOperator<dim>       &elastic_operator;
-    ContactSurface<dim>        &surface;
-    const ContactLaw<dim>      &law;
-    ContactFormulation<dim>    &formulation;
-    const ContactParameters    &parameters;
-    const bool                  verbose;
-    VectorType                 &solution;
-    VectorType                 &contact_pressure;
-    VectorType                  contact_residual;
-    /** The displacement at the start of the load step [mm], ghosted. */
-    VectorType step_start;
-    dealii::ConditionalOStream &pcout;
-    dealii::TimerOutput        &timer;
-    SystemAdditions<dim>        additions;
-    unsigned int                newton_iterations = 0;
+    const Discretisation<dim> &discretisation;
+    ElasticOperator<dim>      &elastic_operator;
+    ContactSurface<dim>       &surface;
+    const ContactLaw<dim>     &law;
+    ContactFormulation<dim>   &formulation;
+    const ContactParameters   &parameters;
+    const bool                 verbose;
+    VectorType                &solution;
+    VectorType                &contact_pressure;
+    VectorType                 contact_residual;
+    /** See tangential_traction(); ghosted. */
+    VectorType tangential_pressure;
+    /** Each node's tractions of the last state update (for the law's
+     * equations). */
+    std::vector<NodeTraction<dim>> tractions;
+    dealii::ConditionalOStream    &pcout;
+    dealii::TimerOutput           &timer;
+    SystemAdditions<dim>           additions;
+    unsigned int                   newton_iterations = 0;
     /** See supports_hold_body(). */
     bool        supports_hold = false;
     std::string material_question;

@@ -50,9 +50,10 @@ namespace signorini
                       const double            pressure) const override;
 
     void
-    linearise(const ContactSurface<dim> &surface,
-              const ContactLaw<dim>     &law,
-              SystemAdditions<dim>      &additions) const override;
+    linearise(const ContactSurface<dim>            &surface,
+              const ContactLaw<dim>                &law,
+              const std::vector<NodeTraction<dim>> &tractions,
+              SystemAdditions<dim>                 &additions) const override;
 
     std::string
     break_cycle() override;

@@ -11,8 +11,11 @@ namespace signorini
 {
   /** Writes @p file (contact_pressure-CC.csv): one row per contact node,
    * gathered on process 0 and sorted by position, with the node's
-   * horizontal coordinates, contact pressure [MPa] and deformed gap [mm].
-   * Collective; process 0 writes. */
+   * coordinates, contact pressure [MPa], deformed gap [mm], obstacle,
+   * state and frame; with friction (@p tangential: the obstacle's shear
+   * traction at the nodes' dofs, ghosted) its shear traction [MPa] and its
+   * slip of the load step [mm] along each tangent. Collective; process 0
+   * writes. */
   template <int dim>
   void
   write_contact_pressure_table(
@@ -20,7 +23,8 @@ namespace signorini
     const ContactSurface<dim>                   &surface,
     const dealii::TrilinosWrappers::MPI::Vector &pressure,
     const dealii::TrilinosWrappers::MPI::Vector &solution,
-    const MPI_Comm                               mpi_communicator);
+    const MPI_Comm                               mpi_communicator,
+    const dealii::TrilinosWrappers::MPI::Vector *tangential = nullptr);
 } // namespace signorini
 
 #endif

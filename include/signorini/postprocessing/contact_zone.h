@@ -79,14 +79,18 @@ namespace signorini
    * the pressure its masters give it, a supported one none), with a Gauss
    * rule of high order, since a closed-form pressure has a square-root edge.
    * Integrals are weighted by Discretisation::weight (over the whole revolution
-   * of an axisymmetric model).
+   * of an axisymmetric model). With friction, @p tangential (the obstacle's
+   * tangential traction at the contact nodes' dofs, ghosted) adds its nodal
+   * forces to each obstacle's force and to the resultant.
    */
   template <int dim>
   ContactZone<dim>
-  evaluate_contact_zone(const Discretisation<dim> &discretisation,
-                        const ContactSurface<dim> &surface,
-                        const dealii::TrilinosWrappers::MPI::Vector &pressure,
-                        const Reference<dim>                        &reference);
+  evaluate_contact_zone(
+    const Discretisation<dim>                   &discretisation,
+    const ContactSurface<dim>                   &surface,
+    const dealii::TrilinosWrappers::MPI::Vector &pressure,
+    const Reference<dim>                        &reference,
+    const dealii::TrilinosWrappers::MPI::Vector *tangential = nullptr);
 
   /**
    * Adds the statistics columns of the contact in general form, except for

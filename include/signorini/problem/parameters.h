@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <signorini/contact/contact_parameters.h>
+#include <signorini/contact/friction_parameters.h>
 #include <signorini/contact/obstacle.h>
 #include <signorini/discretisation/boundary_conditions.h>
 #include <signorini/discretisation/geometry.h>
@@ -43,6 +44,7 @@ namespace signorini
     BoundaryConditions<dim> boundary_conditions;
     ObstacleParameters<dim> obstacle;
     ContactParameters       contact;
+    FrictionParameters      friction;
     LinearSolverParameters  linear_solver;
     Refinement              refinement;
     OutputParameters<dim>   output;

@@ -1,0 +1,154 @@
+#include <signorini/contact/friction_law.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace signorini
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** The free part of @p direction at @p node: below this, the supports
+     * hold the node along it. */
+    template <int dim>
+    bool
+    held_by_supports(const ContactNode<dim> &node, const Tensor<1, dim> &v)
+    {
+      double free = 0.;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (node.free[d])
+          free += v[d] * v[d];
+      return free < 1e-16;
+    }
+  } // namespace
+
+  template <int dim>
+  FrictionLaw<dim>::FrictionLaw(const std::vector<double> &coefficient,
+                                const std::vector<double> &slip_bound)
+    : coefficient(coefficient)
+    , slip_bound(slip_bound)
+  {
+  }
+
+  template <int dim>
+  std::string
+  FrictionLaw<dim>::name() const
+  {
+    return "friction";
+  }
+
+  template <int dim>
+  bool
+  FrictionLaw<dim>::path_dependent() const
+  {
+    return true;
+  }
+
+  template <int dim>
+  NodeState
+  FrictionLaw<dim>::contact_state() const
+  {
+    return NodeState::stick;
+  }
+
+  template <int dim>
+  bool
+  FrictionLaw<dim>::frictional(const ContactNode<dim> &node) const
+  {
+    return node.corner == numbers::invalid_unsigned_int &&
+           (coefficient[node.obstacle] > 0 || slip_bound[node.obstacle] > 0);
+  }
+
+  template <int dim>
+  double
+  FrictionLaw<dim>::bound(const ContactNode<dim> &node,
+                          const double            sigma) const
+  {
+    return slip_bound[node.obstacle] > 0 ?
+             slip_bound[node.obstacle] :
+             coefficient[node.obstacle] * std::max(0., sigma);
+  }
+
+  template <int dim>
+  NodeState
+  FrictionLaw<dim>::state(const ContactNode<dim>  &node,
+                          const NodeTraction<dim> &traction) const
+  {
+    if (!(traction.sigma > 0))
+      return NodeState::open;
+    if (!frictional(node))
+      return NodeState::closed;
+    return traction.tangential.norm() < bound(node, traction.sigma) ?
+             NodeState::stick :
+             NodeState::slip;
+  }
+
+  template <int dim>
+  double
+  FrictionLaw<dim>::complementarity_force(
+    const ContactNode<dim>  &node,
+    const NodeTraction<dim> &traction) const
+  {
+    return node.mass * std::max(0., traction.sigma);
+  }
+
+  template <int dim>
+  std::optional<Tensor<1, dim>>
+  FrictionLaw<dim>::tangential_force(const ContactNode<dim>  &node,
+                                     const NodeTraction<dim> &traction) const
+  {
+    if (!frictional(node))
+      return std::nullopt;
+    const double b    = bound(node, traction.sigma);
+    const double zeta = traction.tangential.norm();
+    if (!(traction.sigma > 0) || zeta == 0.)
+      return Tensor<1, dim>();
+    return node.mass * b / std::max(b, zeta) * traction.tangential;
+  }
+
+  template <int dim>
+  void
+  FrictionLaw<dim>::conditions(const ContactNode<dim>          &node,
+                               const NodeTraction<dim>         &traction,
+                               std::vector<NodeCondition<dim>> &conditions,
+                               std::vector<NodeEquation<dim>>  &equations) const
+  {
+    if (!node.in_contact())
+      return;
+    unsigned int along = 0;
+    while (node.dofs[along] != node.scalar_dof)
+      ++along;
+    conditions.push_back({node.normal, -node.gap, along});
+    // Tangents the supports hold need no condition (and have no equation).
+    if (node.state == NodeState::stick)
+      {
+        // As many conditions as the node has free components.
+        unsigned int free = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          free += node.free[d] ? 1 : 0;
+        for (const auto &t : node.tangents)
+          if (conditions.size() < free && !held_by_supports(node, t))
+            conditions.push_back({t, t * node.reference, along});
+      }
+    else if (node.state == NodeState::slip)
+      {
+        const double zeta = traction.tangential.norm();
+        const auto   d    = zeta > 0 ? traction.tangential / zeta :
+                                       Tensor<1, dim>();
+        const double mu   = coefficient[node.obstacle];
+        const double s    = slip_bound[node.obstacle];
+        for (const auto &t : node.tangents)
+          if (!held_by_supports(node, t))
+            {
+              if (s > 0)
+                equations.push_back({t, node.mass * s * (t * d)});
+              else
+                equations.push_back({t - mu * (t * d) * node.normal, 0.});
+            }
+      }
+  }
+
+  template class FrictionLaw<2>;
+  template class FrictionLaw<3>;
+} // namespace signorini
