@@ -99,6 +99,13 @@ namespace signorini
   }
 
   template <int dim>
+  double
+  ActiveSetFormulation<dim>::tangential_stiffness(const unsigned int) const
+  {
+    return complementarity_constant;
+  }
+
+  template <int dim>
   std::string
   ActiveSetFormulation<dim>::break_cycle()
   {

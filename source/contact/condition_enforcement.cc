@@ -147,14 +147,31 @@ namespace signorini
               }
           }
         if (node.owned)
-          for (unsigned int j = 0; j < k; ++j)
-            {
-              double value = 0.;
-              for (unsigned int i = 0; i < k; ++i)
-                value += e_f(j, i) * equations[i].value;
-              if (value != 0.)
-                additions.forces.push_back({node.dofs[others[j]], value});
-            }
+          {
+            // The equations' displacement terms E_F^-1 G, a block at the
+            // rows F.
+            typename SystemAdditions<dim>::Block block;
+            block.rows    = node.dofs;
+            block.columns = node.dofs;
+            bool any      = false;
+            for (unsigned int j = 0; j < k; ++j)
+              {
+                double value = 0.;
+                for (unsigned int i = 0; i < k; ++i)
+                  {
+                    value += e_f(j, i) * equations[i].value;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      block.matrix[others[j]][d] +=
+                        e_f(j, i) * equations[i].displacement[d];
+                  }
+                if (value != 0.)
+                  additions.forces.push_back({node.dofs[others[j]], value});
+                for (unsigned int d = 0; d < dim; ++d)
+                  any = any || block.matrix[others[j]][d] != 0.;
+              }
+            if (any)
+              additions.blocks.push_back(block);
+          }
         return true;
       }
     } // namespace
@@ -222,6 +239,9 @@ namespace signorini
       for (const auto &[group, group_conditions] : corners)
         add_lines(nodes[corner_node.at(group)], group_conditions, additions);
       const MPI_Comm comm = surface.communicator();
+      additions.has_blocks =
+        additions.has_blocks ||
+        Utilities::MPI::logical_or(!additions.blocks.empty(), comm);
       if (Utilities::MPI::logical_or(test_weights, comm))
         {
           additions.has_test_weights = true;

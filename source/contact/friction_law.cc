@@ -131,13 +131,15 @@ namespace signorini
           if (conditions.size() < free && !held_by_supports(node, t))
             conditions.push_back({t, t * node.reference, along});
       }
+    else if (node.state == NodeState::slip && dim == 3 &&
+             traction.shear.norm() >= 0.99 * bound(node, traction.sigma))
+      add_slip_equations(node, traction, equations);
     else if (node.state == NodeState::slip)
       {
         const double zeta = traction.tangential.norm();
-        const auto   d    = zeta > 0 ? traction.tangential / zeta :
-                                       Tensor<1, dim>();
-        const double mu   = coefficient[node.obstacle];
-        const double s    = slip_bound[node.obstacle];
+        const auto d = zeta > 0 ? traction.tangential / zeta : Tensor<1, dim>();
+        const double mu = coefficient[node.obstacle];
+        const double s  = slip_bound[node.obstacle];
         for (const auto &t : node.tangents)
           if (!held_by_supports(node, t))
             {
@@ -146,6 +148,65 @@ namespace signorini
               else
                 equations.push_back({t - mu * (t * d) * node.normal, 0.});
             }
+      }
+  }
+
+  template <int dim>
+  void
+  FrictionLaw<dim>::add_slip_equations(
+    const ContactNode<dim>         &node,
+    const NodeTraction<dim>        &traction,
+    std::vector<NodeEquation<dim>> &equations) const
+  {
+    // The semismooth Newton step of max(b, |zeta|) q - b zeta = 0 on a
+    // slipping node (Hueber, Stadler and Wohlmuth 2008, with q projected
+    // onto the disk |q| <= b where it is outside), in the node's tangent
+    // coordinates, per unit mass:
+    //   [(|zeta| - b) I + q~ zeta^T / |zeta|] q+
+    //     - c [q~ zeta^T / |zeta| - b I] s+ - mu zeta p+
+    //   = q~ |zeta| - mu zeta p            (Coulomb; Tresca: b fixed,
+    //                                       no p terms: = q~ |zeta|),
+    // with q+ = T^T f / m, p+ = n.f / m, s+ = T^T (u - u_reference): the
+    // slip direction turns with the iteration, so that it converges
+    // superlinearly where a frozen direction would converge linearly.
+    constexpr unsigned int n      = dim - 1;
+    const double           mu     = coefficient[node.obstacle];
+    const bool             tresca = slip_bound[node.obstacle] > 0;
+    const double           b      = bound(node, traction.sigma);
+    const double           m      = node.mass;
+    const double           c      = traction.stiffness;
+    Tensor<1, n>           zeta, q;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        zeta[i] = node.tangents[i] * traction.tangential;
+        q[i]    = node.tangents[i] * traction.shear;
+      }
+    const double length = zeta.norm();
+    if (!(length > 0))
+      return;
+    if (q.norm() > b)
+      q *= b / q.norm();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        if (held_by_supports(node, node.tangents[i]))
+          continue;
+        NodeEquation<dim> equation;
+        double            value = q[i] * length;
+        if (!tresca)
+          {
+            equation.direction -= mu * zeta[i] * node.normal;
+            value -= mu * zeta[i] * traction.pressure;
+          }
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const double qz = q[i] * zeta[j] / length;
+            const double a  = qz + (i == j ? length - b : 0.);
+            const double s  = -c * (qz - (i == j ? b : 0.));
+            equation.direction += a * node.tangents[j];
+            equation.displacement += m * s * node.tangents[j];
+          }
+        equation.value = m * value + equation.displacement * node.reference;
+        equations.push_back(equation);
       }
   }
 

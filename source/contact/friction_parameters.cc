@@ -76,10 +76,9 @@ namespace signorini
         prm.leave_subsection();
         const std::string mu_entry    = name + "/Friction coefficient";
         const std::string bound_entry = name + "/Tresca slip bound";
-        coefficient[number - 1] =
-          parse::in_range(number_of(mu_text, mu_entry),
-                          parse::Range::at_least(0.),
-                          mu_entry);
+        coefficient[number - 1] = parse::in_range(number_of(mu_text, mu_entry),
+                                                  parse::Range::at_least(0.),
+                                                  mu_entry);
         slip_bound[number - 1] =
           bound_text.find_first_not_of(" \t") == std::string::npos ?
             0. :
@@ -102,9 +101,8 @@ namespace signorini
   {
     for (unsigned int number = 1; number <= max_obstacles; ++number)
       if ((coefficient[number - 1] > 0 || slip_bound[number - 1] > 0) &&
-          std::find(obstacle_numbers.begin(),
-                    obstacle_numbers.end(),
-                    number) == obstacle_numbers.end())
+          std::find(obstacle_numbers.begin(), obstacle_numbers.end(), number) ==
+            obstacle_numbers.end())
         throw InputError(section(number) + (coefficient[number - 1] > 0 ?
                                               "/Friction coefficient" :
                                               "/Tresca slip bound"),

@@ -111,6 +111,7 @@ namespace signorini
     NodeTraction<dim> traction;
     const double      gap      = surface.deformed_gap(node, solution);
     const double      pressure = contact_pressure(node.scalar_dof);
+    traction.pressure          = pressure;
     traction.sigma             = for_state ?
                                    formulation.state_pressure(i, node, gap, pressure) :
                                    formulation.residual_pressure(i, node, gap, pressure);
@@ -119,8 +120,11 @@ namespace signorini
         Tensor<1, dim> q;
         for (unsigned int d = 0; d < dim; ++d)
           q[d] = tangential_pressure(node.dofs[d]);
+        traction.shear     = q;
+        traction.slip      = node.slip(solution);
+        traction.stiffness = formulation.tangential_stiffness(i);
         traction.tangential =
-          formulation.tangential_traction(i, node, node.slip(solution), q);
+          formulation.tangential_traction(i, node, traction.slip, q);
       }
     return traction;
   }

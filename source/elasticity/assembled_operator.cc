@@ -224,10 +224,12 @@ namespace signorini
                         system_matrix.add(block.rows[a], column, value);
                       else
                         {
-                          Assert(
-                            constraints.get_constraint_entries(column)->empty(),
-                            ExcMessage("A block meets a constrained "
-                                       "dof with masters."));
+                          // x_column = sum w x_master + g.
+                          for (const auto &[master, weight] :
+                               *constraints.get_constraint_entries(column))
+                            system_matrix.add(block.rows[a],
+                                              master,
+                                              value * weight);
                           system_rhs(block.rows[a]) -=
                             value * constraints.get_inhomogeneity(column);
                         }

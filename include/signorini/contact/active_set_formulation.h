@@ -50,6 +50,9 @@ namespace signorini
                         const dealii::Tensor<1, dim> &slip,
                         const dealii::Tensor<1, dim> &traction) const override;
 
+    double
+    tangential_stiffness(const unsigned int i) const override;
+
     std::string
     break_cycle() override;
 

@@ -83,6 +83,15 @@ namespace signorini
       return traction;
     }
 
+    /** c [MPa/mm] in tangential_traction()'s zeta = q - c s of node @p i
+     * (its derivative by the slip, for a law that linearises it). */
+    virtual double
+    tangential_stiffness(const unsigned int i) const
+    {
+      (void)i;
+      return 0.;
+    }
+
     /** Adds the @p law's conditions and equations of the nodes of
      * @p surface in contact (with their @p tractions of the last state
      * update) to @p additions, as this formulation enforces them. */

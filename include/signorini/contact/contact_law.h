@@ -42,6 +42,10 @@ namespace signorini
   {
     dealii::Tensor<1, dim> direction;
     double                 value;
+    /** A term g . u on the node's displacement [N/mm] (the linearised
+     * slip of a node whose slip direction turns): direction . f +
+     * displacement . u = value. */
+    dealii::Tensor<1, dim> displacement = {};
   };
 
   /**
@@ -52,13 +56,18 @@ namespace signorini
    * and, for a law with friction, the augmented tangential traction zeta
    * [MPa] in the node's tangent plane (the active set's q - c s: the
    * obstacle's tangential traction q on the body and the slip s of the
-   * load step).
+   * load step), with the contact pressure p, q, s and the formulation's
+   * dzeta/ds = -c [MPa/mm] for a law that linearises zeta.
    */
   template <int dim>
   struct NodeTraction
   {
-    double                 sigma = 0.;
+    double                 sigma    = 0.;
+    double                 pressure = 0.;
     dealii::Tensor<1, dim> tangential;
+    dealii::Tensor<1, dim> shear;
+    dealii::Tensor<1, dim> slip;
+    double                 stiffness = 0.;
   };
 
   /**

@@ -67,6 +67,12 @@ namespace signorini
     frictional(const ContactNode<dim> &node) const override;
 
   private:
+    /** Appends the semismooth Newton equations of a slipping @p node in
+     * 3D (its slip direction linearised) to @p equations. */
+    void
+    add_slip_equations(const ContactNode<dim>         &node,
+                       const NodeTraction<dim>        &traction,
+                       std::vector<NodeEquation<dim>> &equations) const;
 
     /** The bound b [MPa] of the shear traction of @p node at the
      * augmented pressure @p sigma. */

@@ -33,9 +33,9 @@ namespace signorini
    * - Blocks: a small dense matrix added at rows x columns (a vertex's dofs,
    *   or one vertex's rows and another's columns), possibly non-symmetric,
    *   with a right-hand side at its rows. Rows at constrained dofs do not
-   *   enter; a column at a constrained dof moves its value to the
-   *   right-hand side (a block meets constrained dofs only at fixed values:
-   *   supports, not hanging nodes or constraint lines).
+   *   enter; a column at a constrained dof enters through its constraint
+   *   (its masters', and its inhomogeneity on the right-hand side; the
+   *   matrix-free operator: at fixed values only).
    * - Forces: right-hand-side entries that do not change the matrix (the
    *   multipliers of an augmented Lagrangian); not at constrained dofs.
    */
