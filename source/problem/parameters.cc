@@ -78,6 +78,7 @@ namespace signorini
     ContactParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     Refinement::declare_parameters(prm);
+    LoadHistory::declare_parameters(prm);
     if (dim == 2)
       {
         OutputParameters<2>::declare_parameters(prm);
@@ -125,6 +126,7 @@ namespace signorini
     contact.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     refinement.parse_parameters(prm);
+    load_history.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
     checkpoint.parse_parameters(prm);

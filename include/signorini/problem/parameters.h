@@ -14,6 +14,7 @@
 #include <signorini/output/checkpoint.h>
 #include <signorini/output/output_parameters.h>
 #include <signorini/postprocessing/reference.h>
+#include <signorini/problem/load_history.h>
 
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ namespace signorini
     ContactParameters       contact;
     LinearSolverParameters  linear_solver;
     Refinement              refinement;
+    LoadHistory             load_history;
     OutputParameters<dim>   output;
     Reference<dim>          reference;
     CheckpointParameters    checkpoint;
