@@ -137,7 +137,7 @@ namespace signorini
                            "axisymmetric is a 2D model in (r, z) = (x, y); "
                            "set Dimension = 2");
         if (boundary_conditions.traction_resultant &&
-            (*boundary_conditions.traction_resultant)[0] != 0.)
+            boundary_conditions.traction_resultant->constant_component(0) != 0.)
           throw InputError("Boundary conditions/Traction resultant",
                            "an axisymmetric body's resultant is axial: its "
                            "first (radial) component must be 0");

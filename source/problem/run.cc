@@ -85,6 +85,21 @@ namespace signorini
         .count();
     };
     double run_time = 0., start = now();
+    // The entries of t alone (the obstacles' displacements, the traction
+    // resultant) at every step, before anything is written; the functions
+    // of the points too are checked where they are evaluated.
+    const auto &history = parameters.load_history;
+    for (unsigned int step = 1; step <= history.n_steps; ++step)
+      {
+        const double t = history.time(step);
+        obstacle->set_time(t);
+        if (const auto &resultant =
+              parameters.boundary_conditions.traction_resultant)
+          resultant->value(t);
+      }
+    // The mesh, its constraints and the contact surface at the end of the
+    // load history: a run of one step is solved there.
+    set_time(history.end_time);
     {
       TimerOutput::Scope           t(timer, "Setup: grid");
       std::set<types::boundary_id> dirichlet_ids;
@@ -202,6 +217,15 @@ namespace signorini
 
   template <int dim>
   void
+  ContactProblem<dim>::set_time(const double t)
+  {
+    loads.set_time(t);
+    discretisation.set_time(t);
+    obstacle->set_time(t);
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::solve(const unsigned int cycle)
   {
     elastic_operator->assemble_load();
@@ -254,6 +278,10 @@ namespace signorini
   ContactProblem<2>::run_cycles(bool);
   template void
   ContactProblem<3>::run_cycles(bool);
+  template void
+  ContactProblem<2>::set_time(double);
+  template void
+  ContactProblem<3>::set_time(double);
   template void
   ContactProblem<2>::solve(unsigned int);
   template void

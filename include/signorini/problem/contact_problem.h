@@ -56,6 +56,11 @@ namespace signorini
     // run.cc
     void
     run_cycles(const bool resume);
+    /** The loads, the Dirichlet data (the constraints anew, once there is a
+     * mesh) and the obstacles at the pseudo-time @p t of the load history.
+     * Throws InputError where one is not finite. */
+    void
+    set_time(const double t);
     /** The contact problem of one cycle by the formulation. */
     void
     solve(const unsigned int cycle);
