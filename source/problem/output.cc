@@ -20,6 +20,7 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace signorini
 {
@@ -93,9 +94,8 @@ namespace signorini
                     "set ylabel 'force on the body along the travel [N]'\n" :
                     "set xlabel 'pseudo-time t'\n"
                     "set ylabel 'force on the body [N]'\n")
-        << "last = " << last << "\n"
-        << "plot";
-    bool first = true;
+        << "last = " << last << "\n";
+    std::vector<std::string> curves;
     for (unsigned int k = 0; k < obstacle->size(); ++k)
       {
         const Tensor<1, dim> &travel = obstacle->displacement(k);
@@ -116,15 +116,18 @@ namespace signorini
             along_travel += (along_travel.empty() ? "" : " + ") + e + "*" + u;
             along_force += (along_force.empty() ? "" : " + ") + e + "*" + f;
           }
-        out << (first ? " " : ", \\\n     ")
-            << "'force_displacement.csv' using (column('cycle') == last ? "
-            << (moves ? along_travel : std::string("column('time')"))
-            << " : NaN):(" << (moves ? along_force : "sqrt(" + size + ")")
-            << ") with linespoints title 'Obstacle" << (n == "1" ? "" : " " + n)
-            << "'";
-        first = false;
+        curves.push_back(
+          "'force_displacement.csv' using (column('cycle') == last ? " +
+          (moves ? along_travel : std::string("column('time')")) + " : NaN):(" +
+          (moves ? along_force : "sqrt(" + size + ")") +
+          ") with linespoints title 'Obstacle" + (n == "1" ? "" : " " + n) +
+          "'");
       }
-    out << "\n";
+    if (curves.empty())
+      out << "# (no obstacle: nothing to draw)\n";
+    for (unsigned int i = 0; i < curves.size(); ++i)
+      out << (i == 0 ? "plot " : ", \\\n     ") << curves[i]
+          << (i + 1 == curves.size() ? "\n" : "");
   }
 
   template <int dim>

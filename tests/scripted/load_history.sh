@@ -8,7 +8,8 @@
 # Displacement (the flat punch, as in load_history_punch.prm), a Traction (the
 # Hertz cylinder, whose contact zone grows over the steps), a Prescribed
 # displacement (the split ring on triangles, remeshed by Gmsh) and a
-# Traction resultant (the axisymmetric Hertz sphere, F ~ t^1.5).
+# Traction resultant (the axisymmetric Hertz sphere, F ~ t^1.5). The
+# punch's chart script draws its curve with gnuplot.
 history() {
   local name=$1 steps=$2 cycles=$3 include=$4
   shift 4
@@ -103,3 +104,8 @@ print("punch: force_displacement.csv has %d rows, force and travel "
 PYTHON
 echo "punch history.pvd:"
 grep -o 'timestep="[^"]*" group="" part="0" file="[^"]*"' punch-history/history.pvd
+echo "punch force_displacement.gnuplot:"
+cat punch-history/force_displacement.gnuplot
+(cd punch-history && gnuplot force_displacement.gnuplot 2>&1)
+echo "force_displacement.png drawn:" \
+  $([ -s punch-history/force_displacement.png ] && echo yes || echo no)
