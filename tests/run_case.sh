@@ -16,10 +16,14 @@
 # A check line reads   ROW COLUMN OP VALUE [TOLERANCE]
 #   ROW:   a cycle number, `last` or `all`; or `rate` (`rate:K`): the check
 #          is on the observed rate, the least-squares slope of log COLUMN
-#          against log dofs over all cycles (from cycle K on)
+#          against log dofs over all cycles (from cycle K on). With a load
+#          history (Load history/Steps > 1) a number counts the rows, one
+#          per step: row K is step K % Steps + 1 of cycle K / Steps
 #   OP:    near (|x-VALUE| <= TOLERANCE), rnear (relative), lt, le, gt, ge;
 #          or `decreasing` / `increasing` (no VALUE): every row below /
 #          above the one before
+#   VALUE: a number, or NUMBER*NAME: the number times the row's column NAME
+#          (e.g. -21.978*time, a force proportional to the load history's t)
 # Checks print PASS or FAIL, so the comparison (compare.py) turns a violated
 # bound into a failing test even where the bound is far tighter than the
 # comparison's own tolerance.
@@ -69,6 +73,9 @@ written=$(find . -type f ! -path ./run.log | sed 's|^\./||' | LC_ALL=C sort)
     NR > 1 && from >= 0 && $1 + 0 >= from { $2 = "#"; $3 = "#" }
     { print }' "$stats"
 }
+# A load history's table of the obstacles' travel and forces.
+table=$(find . -name force_displacement.csv | sort | head -n 1)
+[ -n "$table" ] && { echo "force_displacement.csv:"; cat "$table"; }
 checks="${prm%.prm}.checks"
 [ -f "$checks" ] || exit 0
 if [ -z "$stats" ]; then
@@ -93,8 +100,13 @@ awk -F, -v checks="$checks" '
       n = split(line, w, /[ \t]+/)
       if (w[1] == "") { for (i = 1; i < n; ++i) w[i] = w[i + 1]; --n }
       row = w[1]; name = w[2]; op = w[3]; v = w[4] + 0; tol = w[5] + 0
+      # VALUE as NUMBER*NAME: times column NAME of each row.
+      by = ""
+      if (w[4] ~ /\*/) { by = substr(w[4], index(w[4], "*") + 1)
+                         v = substr(w[4], 1, index(w[4], "*") - 1) + 0 }
       verdict = "PASS"
       if (!(name in col)) verdict = "FAIL (no column " name ")"
+      else if (by != "" && !(by in col)) verdict = "FAIL (no column " by ")"
       else if (row ~ /^rate/) {
         from = (row ~ /^rate:/) ? substr(row, 6) + 0 : 0
         n_fit = sx = sy = sxx = sxy = 0
@@ -121,8 +133,10 @@ awk -F, -v checks="$checks" '
         first = (row == "all") ? 1 : (row == "last" ? rows : row + 1)
         last  = (row == "all") ? rows : first
         if (first < 1 || last > rows) verdict = "FAIL (no row " row ")"
-        for (r = first; r <= last && verdict == "PASS"; ++r)
-          if (!ok(value[r, col[name]] + 0, op, v, tol)) verdict = "FAIL (" value[r, col[name]] ")"
+        for (r = first; r <= last && verdict == "PASS"; ++r) {
+          target = (by == "") ? v : v * value[r, col[by]]
+          if (!ok(value[r, col[name]] + 0, op, target, tol)) verdict = "FAIL (" value[r, col[name]] ")"
+        }
       }
       printf "check: %s %s %s %s %s: %s\n", row, name, op, w[4], (n > 4 ? w[5] : ""), verdict
     }

@@ -148,7 +148,11 @@ namespace signorini
                         Patterns::Anything(),
                         "A rigid translation of the obstacle from where its "
                         "entries put it [mm], e.g. '0, -0.01': a tool pressed "
-                        "into the body. The body must not start inside the "
+                        "into the body. Each component a number or a muparser "
+                        "expression of the pseudo-time t (Load history), e.g. "
+                        "'0, -0.01*t' for a tool pressed in step by step, '0, "
+                        "-0.01*min(t, 1)' (a ',' inside parentheses belongs to "
+                        "the expression). The body must not start inside the "
                         "obstacle before it moves (except a height). Empty: "
                         "none.");
     }
@@ -305,7 +309,7 @@ namespace signorini
         }
       if (prm.get("Displacement") != defaults.at("Displacement"))
         d.displacement =
-          vector_entry<dim>(prm.get("Displacement"), d.entry("Displacement"));
+          TimeVector<dim>(prm.get("Displacement"), d.entry("Displacement"));
       return d;
     }
   } // namespace

@@ -10,14 +10,33 @@ namespace signorini
   template <int dim>
   void
   ObstacleSet<dim>::add(std::unique_ptr<Obstacle<dim>> obstacle,
-                        const Tensor<1, dim>          &displacement,
+                        const TimeVector<dim>         &displacement,
                         const unsigned int             number,
                         const bool                     may_start_inside)
   {
     numbers.push_back(number > 0 ? number : obstacles.size() + 1);
     obstacles.push_back(std::move(obstacle));
-    displacements.push_back(displacement);
+    histories.push_back(displacement);
+    // A displacement of t is set by set_time().
+    displacements.push_back(displacement.depends_on_time() ?
+                              Tensor<1, dim>() :
+                              displacement.value(0.));
     may_start_inside_flags.push_back(may_start_inside);
+  }
+
+  template <int dim>
+  void
+  ObstacleSet<dim>::set_time(const double t)
+  {
+    for (unsigned int k = 0; k < obstacles.size(); ++k)
+      displacements[k] = histories[k].value(t);
+  }
+
+  template <int dim>
+  const Tensor<1, dim> &
+  ObstacleSet<dim>::displacement(const unsigned int k) const
+  {
+    return displacements[k];
   }
 
   template <int dim>

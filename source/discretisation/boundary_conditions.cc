@@ -22,8 +22,9 @@ namespace signorini
                       "0",
                       Patterns::Anything(),
                       "Displacement [mm] imposed on the Dirichlet components: "
-                      "'ux; uy[; uz]' as functions of x, y[, z], or one "
-                      "expression for all components.");
+                      "'ux; uy[; uz]' as functions of x, y[, z] and the "
+                      "pseudo-time t (Load history), or one expression for "
+                      "all components.");
     prm.declare_entry("Traction boundary ids",
                       "",
                       Patterns::Anything(),
@@ -32,7 +33,8 @@ namespace signorini
                       "0",
                       Patterns::Anything(),
                       "Surface load [MPa = N/mm^2] on the traction boundaries: "
-                      "'tx; ty[; tz]' as functions of x, y[, z].");
+                      "'tx; ty[; tz]' as functions of x, y[, z] and the "
+                      "pseudo-time t (Load history).");
     prm.declare_entry("Traction resultant",
                       "",
                       Patterns::Anything(),
@@ -40,12 +42,14 @@ namespace signorini
                       "traction adds up to. The traction boundaries then "
                       "carry this force as a uniform traction, the force over "
                       "their area on each mesh, and Traction is ignored: a "
-                      "load by a force, exact on every mesh.");
+                      "load by a force, exact on every mesh. Each component "
+                      "a number or an expression of the pseudo-time t (Load "
+                      "history), e.g. '0, -1.5*t'.");
     prm.declare_entry("Body force",
                       "0",
                       Patterns::Anything(),
                       "Volume load [N/mm^3]: 'bx; by[; bz]' as functions of "
-                      "x, y[, z].");
+                      "x, y[, z] and the pseudo-time t (Load history).");
     prm.leave_subsection();
   }
 
@@ -75,26 +79,25 @@ namespace signorini
     prescribed_displacement =
       parse_function<dim>(prm.get("Prescribed displacement"),
                           dim,
-                          "Boundary conditions/Prescribed displacement");
+                          "Boundary conditions/Prescribed displacement",
+                          {},
+                          true);
     traction_ids = parse::boundary_ids(prm.get("Traction boundary ids"),
                                        "Boundary conditions/Traction boundary "
                                        "ids");
-    traction     = parse_function<dim>(prm.get("Traction"),
-                                   dim,
-                                   "Boundary conditions/Traction");
+    traction     = parse_function<dim>(
+      prm.get("Traction"), dim, "Boundary conditions/Traction", {}, true);
     traction_resultant.reset();
     if (!prm.get("Traction resultant").empty())
       {
-        traction_resultant = parse::point<dim>(prm.get("Traction resultant"),
-                                               "Boundary conditions/Traction "
-                                               "resultant");
+        traction_resultant.emplace(prm.get("Traction resultant"),
+                                   "Boundary conditions/Traction resultant");
         if (traction_ids.empty())
           throw InputError("Boundary conditions/Traction resultant",
                            "needs Traction boundary ids");
       }
-    body_force = parse_function<dim>(prm.get("Body force"),
-                                     dim,
-                                     "Boundary conditions/Body force");
+    body_force = parse_function<dim>(
+      prm.get("Body force"), dim, "Boundary conditions/Body force", {}, true);
     prm.leave_subsection();
   }
 

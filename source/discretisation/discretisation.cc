@@ -113,6 +113,28 @@ namespace signorini
     DoFTools::make_hanging_node_constraints(dofs, hanging_nodes);
     hanging_nodes.close();
 
+    make_fixed_constraints();
+
+    supported_dofs.clear();
+    supported_dofs.set_size(dofs.n_dofs());
+    for (const auto &[id, mask] : boundary_conditions.dirichlet)
+      supported_dofs.add_indices(
+        DoFTools::extract_boundary_dofs(dofs, mask, {id}));
+  }
+
+  template <int dim>
+  void
+  Discretisation<dim>::set_time(const double t)
+  {
+    boundary_conditions.prescribed_displacement->set_time(t);
+    if (mesh && dofs.has_active_dofs())
+      make_fixed_constraints();
+  }
+
+  template <int dim>
+  void
+  Discretisation<dim>::make_fixed_constraints()
+  {
     // The hanging nodes' lines, already closed (merged faster than made
     // anew), then the Dirichlet lines of the dofs they leave free.
     fixed_constraints.clear();
@@ -133,12 +155,6 @@ namespace signorini
                                         axisymmetry::axis_tolerance(diagonal),
                                         fixed_constraints);
     fixed_constraints.close();
-
-    supported_dofs.clear();
-    supported_dofs.set_size(dofs.n_dofs());
-    for (const auto &[id, mask] : boundary_conditions.dirichlet)
-      supported_dofs.add_indices(
-        DoFTools::extract_boundary_dofs(dofs, mask, {id}));
   }
 
   template <int dim>

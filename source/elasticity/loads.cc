@@ -16,6 +16,17 @@ namespace signorini
   }
 
   template <int dim>
+  void
+  Loads<dim>::set_time(const double t)
+  {
+    // The functions' time is the state of their evaluation, not a
+    // parameter: the parameters hold them for every user of the loads.
+    boundary_conditions.traction->set_time(t);
+    boundary_conditions.body_force->set_time(t);
+    time = t;
+  }
+
+  template <int dim>
   bool
   Loads<dim>::traction_face(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -117,9 +128,10 @@ namespace signorini
                       discretisation.weight(fe_face_values.quadrature_point(q));
                 }
         area = Utilities::MPI::sum(area, discretisation.mpi_communicator());
-        Vector<double> value(dim);
+        const Tensor<1, dim> resultant = bc.traction_resultant->value(time);
+        Vector<double>       value(dim);
         for (unsigned int d = 0; d < dim; ++d)
-          value(d) = (*bc.traction_resultant)[d] / area;
+          value(d) = resultant[d] / area;
         uniform_traction =
           std::make_unique<Functions::ConstantFunction<dim>>(value);
         traction = uniform_traction.get();

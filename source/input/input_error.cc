@@ -109,6 +109,15 @@ namespace signorini
       }
     } // namespace
 
+    double
+    number(const std::string &text, const std::string &entry)
+    {
+      std::string trimmed = text;
+      trimmed.erase(0, trimmed.find_first_not_of(" \t"));
+      trimmed.erase(trimmed.find_last_not_of(" \t") + 1);
+      return to_double(trimmed, entry);
+    }
+
     Range
     Range::positive()
     {

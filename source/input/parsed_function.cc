@@ -6,6 +6,7 @@
 #include <signorini/input/parsed_function.h>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -16,11 +17,13 @@ namespace signorini
   template <int dim>
   ParsedFunction<dim>::ParsedFunction(const unsigned int n_components,
                                       const std::string &entry,
-                                      const std::string &text)
+                                      const std::string &text,
+                                      const bool         time_dependent)
     : dealii::FunctionParser<dim>(n_components)
     , entry(entry)
     , text(text)
     , zero(true)
+    , uses_time(time_dependent && names_variable(text, "t"))
   {
     for (const auto &expression : parse::split(text, ';'))
       {
@@ -42,7 +45,7 @@ namespace signorini
       {
         std::lock_guard<std::mutex> lock(mutex);
         if (!non_finite)
-          non_finite.emplace(p, v);
+          non_finite = NonFinite{p, v, this->get_time()};
       }
     return v;
   }
@@ -64,44 +67,62 @@ namespace signorini
       dealii::Utilities::MPI::min(non_finite ? rank : n_ranks, comm);
     if (first == n_ranks)
       return;
-    // The point and value of the first process that has one, on all.
-    std::array<double, dim + 1> where{};
+    // The point, value and time of the first process that has one, on
+    // all.
+    std::array<double, dim + 2> where{};
     if (rank == first)
       {
         for (unsigned int d = 0; d < dim; ++d)
-          where[d] = non_finite->first[d];
-        where[dim] = non_finite->second;
+          where[d] = non_finite->point[d];
+        where[dim]     = non_finite->value;
+        where[dim + 1] = non_finite->time;
       }
-    MPI_Bcast(where.data(), dim + 1, MPI_DOUBLE, first, comm);
+    MPI_Bcast(where.data(), dim + 2, MPI_DOUBLE, first, comm);
     std::string point;
     for (unsigned int d = 0; d < dim; ++d)
       point += (d == 0 ? "" : ", ") + number(where[d]);
-    throw InputError(entry,
-                     "'" + text + "' evaluates to " +
-                       (std::isnan(where[dim]) ? std::string("nan") :
-                                                 number(where[dim])) +
-                       " at (" + point + ")");
+    throw InputError(
+      entry,
+      "'" + text + "' evaluates to " +
+        (std::isnan(where[dim]) ? std::string("nan") : number(where[dim])) +
+        " at (" + point + ")" +
+        (uses_time ? ", t = " + number(where[dim + 1]) : std::string()));
+  }
+
+  bool
+  names_variable(const std::string &text, const std::string &name)
+  {
+    const auto identifier = [](const char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    };
+    for (std::size_t begin = 0; begin < text.size();)
+      {
+        if (!identifier(text[begin]))
+          {
+            ++begin;
+            continue;
+          }
+        std::size_t end = begin;
+        while (end < text.size() && identifier(text[end]))
+          ++end;
+        if (text.compare(begin, end - begin, name) == 0 &&
+            end - begin == name.size())
+          return true;
+        begin = end;
+      }
+    return false;
   }
 
   template <int dim>
-  std::unique_ptr<dealii::FunctionParser<dim>>
-  parse_function(const std::string                   &text,
-                 const unsigned int                   n_components,
-                 const std::string                   &entry,
-                 const std::map<std::string, double> &constants)
+  void
+  initialize_parser(dealii::FunctionParser<dim>         &function,
+                    const std::string                   &variables,
+                    const std::vector<std::string>      &expressions,
+                    const std::map<std::string, double> &constants,
+                    const bool                           time_dependent,
+                    const std::string                   &entry,
+                    const std::string                   &text)
   {
-    auto expressions = parse::split(text, ';');
-    if (expressions.size() == 1 && n_components > 1)
-      expressions.assign(n_components, expressions[0]);
-    if (expressions.size() != n_components)
-      throw InputError(entry,
-                       "'" + text + "' should hold " +
-                         std::to_string(n_components) +
-                         " expressions separated by ';' (or one for all)");
-
-    const std::string variables = dim == 1 ? "x" : (dim == 2 ? "x,y" : "x,y,z");
-    auto              function =
-      std::make_unique<ParsedFunction<dim>>(n_components, entry, text);
     // deal.II lets muparser describe a parse error on std::cerr over several
     // lines; keep that quiet and report the parser's own sentence once.
     std::ostringstream muted;
@@ -110,12 +131,14 @@ namespace signorini
       {
         auto all_constants = constants;
         all_constants.emplace("pi", dealii::numbers::PI);
-        function->initialize(variables, expressions, all_constants);
+        function.initialize(variables,
+                            expressions,
+                            all_constants,
+                            time_dependent);
         // muparser reports some errors only on evaluation:
-        dealii::Vector<double> values(n_components);
-        function->vector_value(dealii::Point<dim>(), values);
+        dealii::Vector<double> values(function.n_components);
+        function.vector_value(dealii::Point<dim>(), values);
         std::cerr.rdbuf(cerr_buffer);
-        function->watch();
       }
     catch (const dealii::ExceptionBase &error)
       {
@@ -126,6 +149,40 @@ namespace signorini
           message = message.substr(message.find(said) + said.size());
         throw InputError(entry, "cannot parse '" + text + "': " + message);
       }
+  }
+
+  template <int dim>
+  std::unique_ptr<dealii::FunctionParser<dim>>
+  parse_function(const std::string                   &text,
+                 const unsigned int                   n_components,
+                 const std::string                   &entry,
+                 const std::map<std::string, double> &constants,
+                 const bool                           time_dependent)
+  {
+    auto expressions = parse::split(text, ';');
+    if (expressions.size() == 1 && n_components > 1)
+      expressions.assign(n_components, expressions[0]);
+    if (expressions.size() != n_components)
+      throw InputError(entry,
+                       "'" + text + "' should hold " +
+                         std::to_string(n_components) +
+                         " expressions separated by ';' (or one for all)");
+
+    const std::string variables =
+      std::string(dim == 1 ? "x" : (dim == 2 ? "x,y" : "x,y,z")) +
+      (time_dependent ? ",t" : "");
+    auto function = std::make_unique<ParsedFunction<dim>>(n_components,
+                                                          entry,
+                                                          text,
+                                                          time_dependent);
+    initialize_parser<dim>(*function,
+                           variables,
+                           expressions,
+                           constants,
+                           time_dependent,
+                           entry,
+                           text);
+    function->watch();
     return function;
   }
 
@@ -161,15 +218,26 @@ namespace signorini
   parse_function<1>(const std::string &,
                     unsigned int,
                     const std::string &,
-                    const std::map<std::string, double> &);
+                    const std::map<std::string, double> &,
+                    bool);
   template std::unique_ptr<dealii::FunctionParser<2>>
   parse_function<2>(const std::string &,
                     unsigned int,
                     const std::string &,
-                    const std::map<std::string, double> &);
+                    const std::map<std::string, double> &,
+                    bool);
   template std::unique_ptr<dealii::FunctionParser<3>>
   parse_function<3>(const std::string &,
                     unsigned int,
                     const std::string &,
-                    const std::map<std::string, double> &);
+                    const std::map<std::string, double> &,
+                    bool);
+  template void
+  initialize_parser<1>(dealii::FunctionParser<1> &,
+                       const std::string &,
+                       const std::vector<std::string> &,
+                       const std::map<std::string, double> &,
+                       bool,
+                       const std::string &,
+                       const std::string &);
 } // namespace signorini

@@ -50,9 +50,16 @@ namespace signorini
           name.erase(name.size() - part.size());
         }
       if (name == "solution.pvd" || name == "statistics.csv" ||
-          name == "timings.csv")
+          name == "timings.csv" || name == "force_displacement.csv" ||
+          name == "force_displacement.gnuplot")
         {
           member.owned = true;
+          return member;
+        }
+      if (name == "history.pvd")
+        {
+          member.owned   = true;
+          member.history = true;
           return member;
         }
       // Cycle numbers have at least two digits (deal.II's int_to_string).
@@ -60,7 +67,16 @@ namespace signorini
         return numbered(name, prefix, 2);
       };
       bool owned = false;
-      if (const auto n = cycle_file("solution-"))
+      if (const auto n = numbered(name, "history-", 3))
+        {
+          // A load step's file: ".vtu", ".pvtu" or a piece ".RRRR.vtu".
+          const std::string &rest  = n->second;
+          const auto         piece = numbered(rest, ".", 4);
+          owned                    = rest == ".vtu" || rest == ".pvtu" ||
+                  (piece && piece->second == ".vtu");
+          member.history = owned;
+        }
+      else if (const auto n = cycle_file("solution-"))
         {
           member.cycle            = n->first;
           const std::string &rest = n->second;
@@ -93,7 +109,8 @@ namespace signorini
 
     std::vector<std::string>
     remove_stale_files(const std::string                 &directory,
-                       const std::optional<unsigned int> &resumed_cycle)
+                       const std::optional<unsigned int> &resumed_cycle,
+                       const std::optional<unsigned int> &history_cycle)
     {
       namespace fs = std::filesystem;
       std::vector<std::string> removed;
@@ -111,7 +128,9 @@ namespace signorini
           bool keep = false;
           if (resumed_cycle && !member.partial)
             {
-              if (!member.cycle)
+              if (member.history)
+                keep = history_cycle && *history_cycle <= *resumed_cycle;
+              else if (!member.cycle)
                 keep = true; // rewritten from the checkpoint right away
               else if (member.checkpoint)
                 keep = *member.cycle == *resumed_cycle;

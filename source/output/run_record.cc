@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace signorini
 {
@@ -14,12 +15,10 @@ namespace signorini
     statistics.push_back(row);
   }
 
-  std::optional<unsigned int>
-  RunRecord::last_cycle() const
+  void
+  RunRecord::add_force_displacement(const StatisticsRow &row)
   {
-    if (statistics.empty())
-      return {};
-    return static_cast<unsigned int>(statistics.back().value("cycle"));
+    force_displacement.push_back(row);
   }
 
   void
@@ -35,17 +34,44 @@ namespace signorini
     solution_files.emplace_back(cycle, name);
   }
 
+  void
+  RunRecord::add_history_file(const double time, const std::string &name)
+  {
+    history_files.emplace_back(time, name);
+  }
+
+  namespace
+  {
+    /** The rows as a table with the first one's header. */
+    std::string
+    csv_table(const std::vector<StatisticsRow> &rows)
+    {
+      std::string table;
+      if (!rows.empty())
+        table = rows[0].header() + '\n';
+      for (const auto &row : rows)
+        table += row.line() + '\n';
+      return table;
+    }
+  } // namespace
+
   std::map<std::string, std::string>
   RunRecord::series_records() const
   {
     std::ostringstream pvd;
     dealii::DataOutBase::write_pvd_record(pvd, solution_files);
-    std::string table;
-    if (!statistics.empty())
-      table = statistics[0].header() + '\n';
-    for (const auto &row : statistics)
-      table += row.line() + '\n';
-    return {{"solution.pvd", pvd.str()}, {"statistics.csv", table}};
+    std::map<std::string, std::string> records = {{"solution.pvd", pvd.str()},
+                                                  {"statistics.csv",
+                                                   csv_table(statistics)}};
+    if (!force_displacement.empty())
+      records["force_displacement.csv"] = csv_table(force_displacement);
+    if (!history_files.empty())
+      {
+        std::ostringstream history;
+        dealii::DataOutBase::write_pvd_record(history, history_files);
+        records["history.pvd"] = history.str();
+      }
+    return records;
   }
 
   std::string
@@ -56,7 +82,15 @@ namespace signorini
     char        line[256];
     for (const auto &t : timings)
       {
-        const auto &row = statistics.at(t.cycle);
+        // The cycle's last row (its last load step's).
+        const StatisticsRow *found = nullptr;
+        for (const auto &row : statistics)
+          if (row.value("cycle") == t.cycle)
+            found = &row;
+        if (!found)
+          throw std::out_of_range("timings: no statistics row of cycle " +
+                                  std::to_string(t.cycle));
+        const auto &row = *found;
         std::snprintf(line,
                       sizeof(line),
                       "%u,%llu,%u,%.6f,%.6f,%.3f,%.6f,%.1f\n",

@@ -2,6 +2,7 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
+#include <signorini/input/entry_text.h>
 #include <signorini/output/contact_pressure_table.h>
 #include <signorini/output/file_output.h>
 #include <signorini/output/obstacle_output.h>
@@ -16,8 +17,10 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace signorini
 {
@@ -48,17 +51,101 @@ namespace signorini
       write_atomically(directory + "/obstacle.vtu", [&](std::ostream &out) {
         write_obstacles_vtu(out, *obstacle, box);
       });
+      if (parameters.load_history.stepped())
+        write_atomically(directory + "/force_displacement.gnuplot",
+                         [&](std::ostream &out) {
+                           write_force_displacement_chart(out);
+                         });
     });
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::record_statistics(const unsigned int cycle)
+  ContactProblem<dim>::write_force_displacement_chart(std::ostream &out) const
+  {
+    // Along each obstacle's travel at the end of the history (the
+    // obstacles are there now): the travel and the force on the body along
+    // it, of the final cycle; if no obstacle moves, the size of each force
+    // against t.
+    const char        *axes  = "xyz";
+    const unsigned int last  = parameters.refinement.n_cycles - 1;
+    bool               moves = false;
+    for (unsigned int k = 0; k < obstacle->size(); ++k)
+      moves = moves || obstacle->displacement(k).norm() > 0.;
+    out << "# The force-displacement chart of a load history, written by "
+           "signorini:\n"
+           "#   gnuplot force_displacement.gnuplot\n"
+           "# in the output directory draws force_displacement.png from "
+           "force_displacement.csv\n"
+        << (moves ? "# (the final cycle's steps): each moving obstacle's "
+                    "force on the body along its\n"
+                    "# travel against the travel, the direction of its "
+                    "displacement at the last step.\n" :
+                    "# (the final cycle's steps): the size of each "
+                    "obstacle's force on the body against\n"
+                    "# the pseudo-time t.\n")
+        << "set datafile separator ','\n"
+           "set datafile columnheaders\n"
+           "set terminal pngcairo size 800,560 font ',11'\n"
+           "set output 'force_displacement.png'\n"
+           "set grid\n"
+           "set key top left\n"
+        << (moves ? "set xlabel 'travel of the obstacle [mm]'\n"
+                    "set ylabel 'force on the body along the travel [N]'\n" :
+                    "set xlabel 'pseudo-time t'\n"
+                    "set ylabel 'force on the body [N]'\n")
+        << "last = " << last << "\n";
+    std::vector<std::string> curves;
+    for (unsigned int k = 0; k < obstacle->size(); ++k)
+      {
+        const Tensor<1, dim> &travel = obstacle->displacement(k);
+        if (moves && !(travel.norm() > 0.))
+          continue;
+        const std::string n = std::to_string(obstacle->number(k));
+        // The components along the unit travel, or the size.
+        std::string along_travel, along_force, size;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const std::string f = "column('force" + n + "_" + axes[d] + "')";
+            size += (d > 0 ? " + " : "") + f + "**2";
+            if (travel[d] == 0.)
+              continue;
+            const std::string e = entry_text::of(travel[d] / travel.norm());
+            const std::string u =
+              "column('displacement" + n + "_" + axes[d] + "')";
+            along_travel += (along_travel.empty() ? "" : " + ") + e + "*" + u;
+            along_force += (along_force.empty() ? "" : " + ") + e + "*" + f;
+          }
+        curves.push_back(
+          "'force_displacement.csv' using (column('cycle') == last ? " +
+          (moves ? along_travel : std::string("column('time')")) + " : NaN):(" +
+          (moves ? along_force : "sqrt(" + size + ")") +
+          ") with linespoints title 'Obstacle" + (n == "1" ? "" : " " + n) +
+          "'");
+      }
+    if (curves.empty())
+      out << "# (no obstacle: nothing to draw)\n";
+    for (unsigned int i = 0; i < curves.size(); ++i)
+      out << (i == 0 ? "plot " : ", \\\n     ") << curves[i]
+          << (i + 1 == curves.size() ? "\n" : "");
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::record_statistics(const unsigned int cycle,
+                                         const unsigned int step)
   {
     TimerOutput::Scope t(timer, "Output: statistics");
-    const char        *axes = "xyz";
+    const char        *axes    = "xyz";
+    const auto        &history = parameters.load_history;
     StatisticsRow      row;
     row.add_count("cycle", cycle);
+    // Only with a load history: a run of one step keeps its columns.
+    if (history.stepped())
+      {
+        row.add_count("step", step);
+        row.add("time", history.time(step));
+      }
     row.add_count("cells",
                   discretisation.triangulation().n_global_active_cells());
     row.add_count("dofs", discretisation.dof_handler().n_dofs());
@@ -203,6 +290,32 @@ namespace signorini
         row.add("probe" + std::to_string(i) + "_u" + axes[d], probes[i][d]);
     record.add_statistics(row);
 
+    if (history.stepped())
+      {
+        // Each obstacle's displacement and its force on the body, as the
+        // statistics give it: K u - f at the contact nodes for a single
+        // obstacle, the nodal p m n of its nodes for each of several; axial
+        // alone in a revolved model.
+        StatisticsRow travel;
+        travel.add_count("cycle", cycle);
+        travel.add_count("step", step);
+        travel.add("time", history.time(step));
+        for (unsigned int k = 0; k < obstacle->size(); ++k)
+          {
+            const std::string n = std::to_string(obstacle->number(k));
+            Tensor<1, dim>    force =
+              obstacle->size() == 1 ? contact_force : zone.obstacles[k].force;
+            if (revolution)
+              force[0] = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              travel.add("displacement" + n + "_" + axes[d],
+                         obstacle->displacement(k)[d]);
+            for (unsigned int d = 0; d < dim; ++d)
+              travel.add("force" + n + "_" + axes[d], force[d]);
+          }
+        record.add_force_displacement(travel);
+      }
+
     pcout << "   " << newton.iterations() << " iterations, " << active
           << " active nodes, contact force ";
     if (obstacle->single_height())
@@ -231,17 +344,11 @@ namespace signorini
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::output_results(const unsigned int cycle)
+  std::shared_ptr<const VtuPiece>
+  ContactProblem<dim>::solution_piece()
   {
-    TimerOutput::Scope t(timer, "Output");
-    // The previous cycle's files are written by now (they had its whole
-    // computation to be).
-    background_writer.wait();
     const unsigned int rank =
       Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int n_ranks =
-      Utilities::MPI::n_mpi_processes(mpi_communicator);
     const auto &owned_dofs    = discretisation.locally_owned_dofs();
     const auto &relevant_dofs = discretisation.locally_relevant_dofs();
 
@@ -267,7 +374,7 @@ namespace signorini
       relevant_entries(pressure, relevant_dofs);
     const std::vector<double> relevant_active =
       relevant_entries(active, relevant_dofs);
-    const auto piece = std::make_shared<const VtuPiece>(
+    return std::make_shared<const VtuPiece>(
       build_piece(PieceInputs<dim>{discretisation.mapping(),
                                    discretisation.dof_handler(),
                                    relevant_dofs,
@@ -278,63 +385,108 @@ namespace signorini
                                    static_cast<float>(rank),
                                    fields},
                   MultithreadInfo::n_threads()));
+  }
 
+  template <int dim>
+  std::string
+  ContactProblem<dim>::write_solution(
+    const std::shared_ptr<const VtuPiece> &piece,
+    const std::string                     &base,
+    const unsigned int                     threads)
+  {
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
     const std::string &directory = parameters.output.directory;
-    const std::string  base = "solution-" + Utilities::int_to_string(cycle, 2);
-    const std::string  name = base + (n_ranks == 1 ? ".vtu" : ".pvtu");
-    record.add_solution_file(cycle, name);
-    const auto records       = record.series_records();
-    const auto write_records = [directory, records]() {
-      for (const auto &[file, text] : records)
-        write_atomically(directory + "/" + file,
-                         [&](std::ostream &out) { out << text; });
-    };
-
+    const std::string  name      = base + (n_ranks == 1 ? ".vtu" : ".pvtu");
     if (n_ranks == 1)
       {
-        // In the background: the VTU file, then the records that list it
-        // (run_cycles launches them after the checkpoint is queued). Until
-        // the last cycle the file is compressed while the next cycle
-        // computes, on the core that computation leaves free; the last one
-        // has nothing to overlap, and run_cycles waits for it: it takes all
-        // cores.
-        const unsigned int threads =
-          cycle + 1 < parameters.refinement.n_cycles ?
-            1 :
-            MultithreadInfo::n_threads();
+        // In the background, before the records that list it.
         const auto compression = parameters.output.compression;
         background_writer.add([piece, directory, name, compression, threads]() {
           write_atomically(directory + "/" + name, [&](std::ostream &out) {
             write_vtu(out, *piece, compression, threads);
           });
         });
-        background_writer.add(write_records);
+        return name;
       }
+    write_collectively(mpi_communicator, [&]() {
+      write_atomically(directory + "/" + base + "." +
+                         Utilities::int_to_string(rank, 4) + ".vtu",
+                       [&](std::ostream &out) {
+                         write_vtu(out,
+                                   *piece,
+                                   parameters.output.compression,
+                                   MultithreadInfo::n_threads());
+                       });
+    });
+    write_collectively(mpi_communicator, [&]() {
+      if (rank != 0)
+        return;
+      std::vector<std::string> pieces;
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        pieces.push_back(base + "." + Utilities::int_to_string(r, 4) + ".vtu");
+      write_atomically(directory + "/" + name, [&](std::ostream &out) {
+        write_pvtu_record(out, pieces, *piece);
+      });
+    });
+    return name;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_records()
+  {
+    const std::string &directory     = parameters.output.directory;
+    const auto         records       = record.series_records();
+    const auto         write_records = [directory, records]() {
+      for (const auto &[file, text] : records)
+        write_atomically(directory + "/" + file,
+                         [&](std::ostream &out) { out << text; });
+    };
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      background_writer.add(write_records);
     else
-      {
-        write_collectively(mpi_communicator, [&]() {
-          write_atomically(directory + "/" + base + "." +
-                             Utilities::int_to_string(rank, 4) + ".vtu",
-                           [&](std::ostream &out) {
-                             write_vtu(out,
-                                       *piece,
-                                       parameters.output.compression,
-                                       MultithreadInfo::n_threads());
-                           });
-        });
-        write_collectively(mpi_communicator, [&]() {
-          if (rank != 0)
-            return;
-          std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < n_ranks; ++r)
-            pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
-                             ".vtu");
-          write_atomically(directory + "/" + name, [&](std::ostream &out) {
-            write_pvtu_record(out, pieces, *piece);
-          });
+      write_collectively(mpi_communicator, [&]() {
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
           write_records();
-        });
-      }
+      });
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::output_results(const unsigned int cycle)
+  {
+    TimerOutput::Scope t(timer, "Output");
+    // The previous cycle's files are written by now (they had its whole
+    // computation to be).
+    background_writer.wait();
+    const auto piece = solution_piece();
+
+    // On one process, until the last cycle the file is compressed while
+    // the next cycle computes, on the core that computation leaves free;
+    // the last one has nothing to overlap, and run_cycles waits for it: it
+    // takes all cores. run_cycles launches the writes after the checkpoint
+    // is queued.
+    const bool         last_cycle = cycle + 1 == parameters.refinement.n_cycles;
+    const unsigned int threads = last_cycle ? MultithreadInfo::n_threads() : 1;
+    const auto        &history = parameters.load_history;
+    if (history.stepped() && last_cycle)
+      record.add_history_file(
+        history.end_time,
+        write_solution(piece,
+                       "history-" +
+                         Utilities::int_to_string(history.n_steps, 3),
+                       threads));
+    record.add_solution_file(
+      cycle,
+      write_solution(piece,
+                     "solution-" + Utilities::int_to_string(cycle, 2),
+                     threads));
+    write_records();
+
+    const std::string &directory = parameters.output.directory;
     if (parameters.output.contact_pressure_table)
       write_collectively(mpi_communicator, [&]() {
         write_contact_pressure_table(directory + "/contact_pressure-" +
@@ -350,16 +502,60 @@ namespace signorini
       });
   }
 
+  template <int dim>
+  void
+  ContactProblem<dim>::output_step(const unsigned int cycle,
+                                   const unsigned int step)
+  {
+    TimerOutput::Scope t(timer, "Output");
+    const auto        &history = parameters.load_history;
+    // The final cycle's steps as a series of their own; the next step
+    // computes while one process writes them on one thread.
+    if (cycle + 1 == parameters.refinement.n_cycles)
+      record.add_history_file(
+        history.time(step),
+        write_solution(solution_piece(),
+                       "history-" + Utilities::int_to_string(step, 3),
+                       1));
+    // The rows so far: a run that stops at a later step keeps them.
+    write_records();
+    background_writer.launch();
+  }
+
   template void
   ContactProblem<2>::write_obstacle_and_parameters() const;
   template void
   ContactProblem<3>::write_obstacle_and_parameters() const;
   template void
-  ContactProblem<2>::record_statistics(unsigned int);
+  ContactProblem<2>::write_force_displacement_chart(std::ostream &) const;
   template void
-  ContactProblem<3>::record_statistics(unsigned int);
+  ContactProblem<3>::write_force_displacement_chart(std::ostream &) const;
+  template void
+  ContactProblem<2>::record_statistics(unsigned int, unsigned int);
+  template void
+  ContactProblem<3>::record_statistics(unsigned int, unsigned int);
   template void
   ContactProblem<2>::output_results(unsigned int);
   template void
   ContactProblem<3>::output_results(unsigned int);
+  template void
+  ContactProblem<2>::output_step(unsigned int, unsigned int);
+  template void
+  ContactProblem<3>::output_step(unsigned int, unsigned int);
+  template std::shared_ptr<const VtuPiece>
+  ContactProblem<2>::solution_piece();
+  template std::shared_ptr<const VtuPiece>
+  ContactProblem<3>::solution_piece();
+  template std::string
+  ContactProblem<2>::write_solution(const std::shared_ptr<const VtuPiece> &,
+                                    const std::string &,
+                                    unsigned int);
+  template std::string
+  ContactProblem<3>::write_solution(const std::shared_ptr<const VtuPiece> &,
+                                    const std::string &,
+                                    unsigned int);
+  template void
+  ContactProblem<2>::write_records();
+  template void
+  ContactProblem<3>::write_records();
 } // namespace signorini

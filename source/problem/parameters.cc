@@ -79,6 +79,7 @@ namespace signorini
     ContactParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     Refinement::declare_parameters(prm);
+    LoadHistory::declare_parameters(prm);
     if (dim == 2)
       {
         OutputParameters<2>::declare_parameters(prm);
@@ -127,6 +128,7 @@ namespace signorini
     friction.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     refinement.parse_parameters(prm);
+    load_history.parse_parameters(prm);
     output.parse_parameters(prm);
     reference.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
@@ -145,7 +147,7 @@ namespace signorini
                            "axisymmetric is a 2D model in (r, z) = (x, y); "
                            "set Dimension = 2");
         if (boundary_conditions.traction_resultant &&
-            (*boundary_conditions.traction_resultant)[0] != 0.)
+            boundary_conditions.traction_resultant->constant_component(0) != 0.)
           throw InputError("Boundary conditions/Traction resultant",
                            "an axisymmetric body's resultant is axial: its "
                            "first (radial) component must be 0");

@@ -45,7 +45,9 @@ namespace signorini
     /** The tables restored on resume. */
     const std::vector<std::string> tables = {"solution.pvd",
                                              "statistics.csv",
-                                             "timings.csv"};
+                                             "timings.csv",
+                                             "force_displacement.csv",
+                                             "history.pvd"};
   } // namespace
 
   template <int dim>
@@ -71,7 +73,10 @@ namespace signorini
     write_collectively(mpi_communicator, [&]() {
       if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
         return;
-      output_series::remove_stale_files(directory, resumed);
+      // The files of the load steps are the final cycle's.
+      output_series::remove_stale_files(directory,
+                                        resumed,
+                                        parameters.refinement.n_cycles - 1);
     });
     write_obstacle_and_parameters();
     return resumed;

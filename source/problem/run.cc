@@ -1,12 +1,14 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <signorini/base/failures.h>
 #include <signorini/base/interruption.h>
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
 #include <signorini/discretisation/axisymmetry.h>
 #include <signorini/elasticity/rigid_motions.h>
 #include <signorini/input/entry_text.h>
+#include <signorini/input/input_error.h>
 #include <signorini/mesh_adaptation/kelly_indicator.h>
 #include <signorini/postprocessing/boundary_penetration.h>
 #include <signorini/problem/contact_problem.h>
@@ -66,7 +68,7 @@ namespace signorini
           }
         catch (Interrupted &stop)
           {
-            stop.finished_cycle = record.last_cycle();
+            stop.finished_cycle = finished_cycle;
             stop.resumable      = stop.finished_cycle && writes_checkpoints();
             throw;
           }
@@ -85,6 +87,21 @@ namespace signorini
         .count();
     };
     double run_time = 0., start = now();
+    // The entries of t alone (the obstacles' displacements, the traction
+    // resultant) at every step, before anything is written; the functions
+    // of the points too are checked where they are evaluated.
+    const auto &history = parameters.load_history;
+    for (unsigned int step = 1; step <= history.n_steps; ++step)
+      {
+        const double t = history.time(step);
+        obstacle->set_time(t);
+        if (const auto &resultant =
+              parameters.boundary_conditions.traction_resultant)
+          resultant->value(t);
+      }
+    // The mesh, its constraints and the contact surface at the end of the
+    // load history: a run of one step is solved there.
+    set_time(history.end_time);
     {
       TimerOutput::Scope           t(timer, "Setup: grid");
       std::set<types::boundary_id> dirichlet_ids;
@@ -135,7 +152,10 @@ namespace signorini
     run_time += now() - start;
     const auto resumed = start_output(resume);
     if (resumed)
-      restore_checkpoint(*resumed, run_time);
+      {
+        restore_checkpoint(*resumed, run_time);
+        finished_cycle = resumed;
+      }
     const unsigned int first_cycle = resumed ? *resumed + 1 : 0;
     for (unsigned int cycle = first_cycle;
          cycle < parameters.refinement.n_cycles;
@@ -154,7 +174,12 @@ namespace signorini
               << " cells, " << discretisation.dof_handler().n_dofs() << " dofs"
               << std::endl;
         const double solve_start = now();
-        solve(cycle);
+        if (history.stepped())
+          // Every step but the last with its results; the last one is
+          // finished as a cycle without a history.
+          solve_history(cycle);
+        else
+          solve(cycle);
         timings.contact_solve = now() - solve_start;
         // The system is built anew on the next mesh: free it before the
         // error estimate and the output's patches take their memory. (The
@@ -164,7 +189,7 @@ namespace signorini
         estimate_error();
         run_time += now() - start;
         timings.run_time = run_time;
-        record_statistics(cycle);
+        record_statistics(cycle, history.n_steps);
         output_results(cycle);
         // The cycle's results are written: a body that an obstacle passes
         // through where it may not touch stops the run after them.
@@ -185,6 +210,7 @@ namespace signorini
         save_checkpoint(cycle, run_time);
         background_writer.launch();
         release_free_memory();
+        finished_cycle = cycle;
       }
     {
       TimerOutput::Scope t(timer, "Output");
@@ -208,11 +234,98 @@ namespace signorini
 
   template <int dim>
   void
+  ContactProblem<dim>::set_time(const double t)
+  {
+    loads.set_time(t);
+    discretisation.set_time(t);
+    obstacle->set_time(t);
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::solve(const unsigned int cycle)
   {
     elastic_operator->assemble_load();
     newton.start_cycle();
     formulation->solve(newton, cycle);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_history(const unsigned int cycle)
+  {
+    const auto &history = parameters.load_history;
+    // Each cycle replays the whole history on its mesh, from zero: a
+    // resumed run, which continues with the next cycle, repeats the
+    // uninterrupted one.
+    solution = 0.;
+    pressure = 0.;
+    for (unsigned int step = 1; step <= history.n_steps; ++step)
+      {
+        // A signal stops the run between steps too (or between Newton
+        // steps); the files of the finished steps stay.
+        if (step > 1)
+          interruption::check(mpi_communicator);
+        const double t = history.time(step);
+        pcout << "  Step " << step << " of " << history.n_steps << ": t = " << t
+              << std::endl;
+        start_load_step(step);
+        try
+          {
+            solve(cycle);
+          }
+        catch (const SolverFailure &failure)
+          {
+            throw SolverFailure(failure.status,
+                                std::string(failure.what()) + " (load step " +
+                                  std::to_string(step) + " of " +
+                                  std::to_string(history.n_steps) +
+                                  ", t = " + number(t) + ")");
+          }
+        if (step == history.n_steps)
+          break;
+        estimate_error();
+        record_statistics(cycle, step);
+        output_step(cycle, step);
+        if (parameters.contact.acts())
+          check_boundary_penetration(discretisation,
+                                     *obstacle,
+                                     parameters.obstacle.contact_ids,
+                                     solution,
+                                     cycle);
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::start_load_step(const unsigned int step)
+  {
+    TimerOutput::Scope t(timer, "Setup: load step");
+    const double       time = parameters.load_history.time(step);
+    // The loads and the Dirichlet data of the step, and the obstacles where
+    // it puts them.
+    set_time(time);
+    // The displacement of the last step (zero on the first) with the new
+    // Dirichlet values: the Newton iteration's start.
+    VectorType owned(discretisation.locally_owned_dofs(), mpi_communicator);
+    owned = solution;
+    discretisation.constraints().distribute(owned);
+    solution = owned;
+    // The elastic system holds the old constraints, loads and gaps: built
+    // anew by the next solve.
+    elastic_operator->invalidate();
+    // The contact nodes (their gaps, and which obstacle each faces) of the
+    // moved obstacles.
+    try
+      {
+        contact_surface.setup(discretisation);
+      }
+    catch (const InputError &error)
+      {
+        throw InputError(error.entry,
+                         std::string(error.what()) + " at t = " + number(time));
+      }
+    newton.start_step();
   }
 
   template <int dim>
@@ -261,9 +374,21 @@ namespace signorini
   template void
   ContactProblem<3>::run_cycles(bool);
   template void
+  ContactProblem<2>::set_time(double);
+  template void
+  ContactProblem<3>::set_time(double);
+  template void
   ContactProblem<2>::solve(unsigned int);
   template void
   ContactProblem<3>::solve(unsigned int);
+  template void
+  ContactProblem<2>::solve_history(unsigned int);
+  template void
+  ContactProblem<3>::solve_history(unsigned int);
+  template void
+  ContactProblem<2>::start_load_step(unsigned int);
+  template void
+  ContactProblem<3>::start_load_step(unsigned int);
   template void
   ContactProblem<2>::estimate_error();
   template void

@@ -6,7 +6,10 @@
 // the others not; a fresh run removes every series file and nothing else;
 // a run resumed after cycle k keeps the files of cycles 0..k, the
 // checkpoint of cycle k and the files of no cycle, and removes the rest of
-// the series (later cycles, other checkpoints, temporaries).
+// the series (later cycles, other checkpoints, temporaries). The files of a
+// load history's steps are the final cycle's: kept by a run resumed after
+// it, removed by one resumed before it; force_displacement.* are the run's
+// tables.
 
 #include <signorini/output/output_series.h>
 
@@ -35,6 +38,8 @@ namespace
       std::cout << ", checkpoint";
     if (member.partial)
       std::cout << ", partial";
+    if (member.history)
+      std::cout << ", history";
     std::cout << '\n';
   }
 
@@ -120,10 +125,12 @@ namespace
 
   std::vector<std::string>
   remove_and_list(const fs::path                    &directory,
-                  const std::optional<unsigned int> &resumed_cycle)
+                  const std::optional<unsigned int> &resumed_cycle,
+                  const std::optional<unsigned int> &history_cycle = {})
   {
-    const auto removed =
-      output_series::remove_stale_files(directory.string(), resumed_cycle);
+    const auto removed = output_series::remove_stale_files(directory.string(),
+                                                           resumed_cycle,
+                                                           history_cycle);
     std::cout << "  removed (" << removed.size() << "):";
     for (const auto &name : removed)
       std::cout << ' ' << name;
@@ -135,6 +142,17 @@ namespace
     auto sorted = removed;
     std::sort(sorted.begin(), sorted.end());
     return sorted;
+  }
+
+  /** How many of @p names are a load history's step files. */
+  long
+  count_history(const std::vector<std::string> &names)
+  {
+    return std::count_if(names.begin(),
+                         names.end(),
+                         [](const std::string &name) {
+                           return name.rfind("history", 0) == 0;
+                         });
   }
 } // namespace
 
@@ -239,6 +257,78 @@ main()
 
   std::cout << "remove_stale_files, again (nothing left to remove):\n";
   checks::expect("nothing removed", remove_and_list(directory, 1u).empty());
+
+  // A load history: the final cycle's step files (history) are that
+  // cycle's, force_displacement.* are the run's tables.
+  const std::vector<std::string> history = {"history-001.vtu",
+                                            "history-002.pvtu",
+                                            "history-002.0000.vtu",
+                                            "history-002.0001.vtu",
+                                            "history-1000.vtu",
+                                            "history.pvd",
+                                            "history-003.vtu.part"};
+  const std::vector<std::string> tables  = {"force_displacement.csv",
+                                            "force_displacement.gnuplot"};
+  std::cout << "classify, load history files:\n";
+  unsigned int n_history_wrong = 0;
+  for (const auto &name : history)
+    {
+      print(name);
+      const auto member = output_series::classify(name);
+      n_history_wrong += !member.owned || !member.history || member.cycle;
+    }
+  for (const auto &name : tables)
+    {
+      print(name);
+      const auto member = output_series::classify(name);
+      n_history_wrong += !member.owned || member.history || member.cycle;
+    }
+  for (const auto &name : {"history-01.vtu",
+                           "history-001.csv",
+                           "history.pvd.bak",
+                           "force_displacement.png"})
+    {
+      print(name);
+      n_history_wrong += output_series::classify(name).owned;
+    }
+  checks::expect("history files owned as the final cycle's, the tables as "
+                 "the run's; other names not owned",
+                 n_history_wrong == 0);
+
+  // A run of cycles 0..2 whose steps were written on cycle 2.
+  const auto populate_history = [&]() {
+    fs::remove_all(directory);
+    fs::create_directories(directory);
+    for (const auto &names : {history,
+                              tables,
+                              std::vector<std::string>{"solution-00.vtu",
+                                                       "solution-01.vtu",
+                                                       "solution-02.vtu",
+                                                       "statistics.csv"}})
+      for (const auto &name : names)
+        std::ofstream(directory / name) << name << '\n';
+  };
+  const auto removed_history = [&](const std::optional<unsigned int> &cycle) {
+    return count_history(remove_and_list(directory, cycle, 2u));
+  };
+  std::cout << "remove_stale_files, history of cycle 2, resumed after "
+               "cycle 1:\n";
+  populate_history();
+  checks::expect("every history file removed, the tables kept",
+                 removed_history(1u) == 7 &&
+                   fs::exists(directory / "force_displacement.csv") &&
+                   fs::exists(directory / "force_displacement.gnuplot"));
+  std::cout << "remove_stale_files, history of cycle 2, resumed after "
+               "cycle 2:\n";
+  populate_history();
+  checks::expect("only the temporary removed",
+                 removed_history(2u) == 1 &&
+                   fs::exists(directory / "history.pvd"));
+  std::cout << "remove_stale_files, history of cycle 2, fresh run:\n";
+  populate_history();
+  checks::expect("every series file removed",
+                 removed_history({}) == 7 &&
+                   !fs::exists(directory / "force_displacement.csv"));
 
   fs::remove_all(directory);
   std::cout << "temporary directory removed: "

@@ -7,6 +7,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
+#include <signorini/input/time_vector.h>
+
 #include <memory>
 #include <set>
 #include <string>
@@ -64,8 +66,8 @@ namespace signorini
     /** geometry file: the file, with its folder. */
     std::string geometry_file;
     /** The obstacle's rigid translation from where its entries put it
-     * [mm]. */
-    dealii::Tensor<1, dim> displacement;
+     * [mm], a function of the pseudo-time t of the load history. */
+    TimeVector<dim> displacement;
 
     /** "SECTION/NAME", for messages. */
     std::string

@@ -7,6 +7,7 @@
 
 #include <signorini/contact/obstacle.h>
 #include <signorini/contact/obstacle_parameters.h>
+#include <signorini/input/time_vector.h>
 
 #include <memory>
 #include <ostream>
@@ -25,13 +26,25 @@ namespace signorini
   class ObstacleSet : public Obstacle<dim>
   {
   public:
-    /** Adds @p obstacle, moved by @p displacement [mm], as number
-     * @p number; @p may_start_inside: the body may start inside it. */
+    /** Adds @p obstacle, moved by @p displacement [mm] (a function of the
+     * pseudo-time t, see set_time(); a constant is where it is from the
+     * start), as number @p number; @p may_start_inside: the body may start
+     * inside it. */
     void
     add(std::unique_ptr<Obstacle<dim>> obstacle,
-        const dealii::Tensor<1, dim>  &displacement     = {},
+        const TimeVector<dim>         &displacement     = {},
         const unsigned int             number           = 0,
         const bool                     may_start_inside = true);
+
+    /** Moves each obstacle to its displacement at the pseudo-time @p t of
+     * the load history. Throws InputError naming the entry and t if a
+     * displacement is not finite there. */
+    void
+    set_time(const double t);
+
+    /** The displacement [mm] of obstacle @p k where it is now. */
+    const dealii::Tensor<1, dim> &
+    displacement(const unsigned int k) const;
 
     unsigned int
     size() const;
@@ -101,6 +114,7 @@ namespace signorini
 
   private:
     std::vector<std::unique_ptr<Obstacle<dim>>> obstacles;
+    std::vector<TimeVector<dim>>                histories;
     std::vector<dealii::Tensor<1, dim>>         displacements;
     std::vector<unsigned int>                   numbers;
     std::vector<bool>                           may_start_inside_flags;

@@ -6,6 +6,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/fe/component_mask.h>
 
+#include <signorini/input/time_vector.h>
+
 #include <memory>
 #include <optional>
 #include <set>
@@ -25,8 +27,11 @@ namespace signorini
    *   force on every mesh, however faceted its curved boundaries.
    * - `Body force` acts in the whole body.
    *
-   * Functions are muparser expressions of x, y[, z], one per component
-   * separated by ';', or one expression for all components.
+   * Functions are muparser expressions of x, y[, z] and the pseudo-time t
+   * of the load history, one per component separated by ';', or one
+   * expression for all components; their time is set by the problem
+   * (FunctionTime::set_time) for each load step. The traction resultant's
+   * components are numbers or expressions of t.
    */
   template <int dim>
   struct BoundaryConditions
@@ -36,8 +41,9 @@ namespace signorini
     std::unique_ptr<dealii::FunctionParser<dim>> prescribed_displacement;
     std::set<dealii::types::boundary_id>         traction_ids;
     std::unique_ptr<dealii::FunctionParser<dim>> traction;
-    /** The force [N] the uniform traction adds up to, if given. */
-    std::optional<dealii::Tensor<1, dim>>        traction_resultant;
+    /** The force [N] the uniform traction adds up to, if given, as a
+     * function of t. */
+    std::optional<TimeVector<dim>>               traction_resultant;
     std::unique_ptr<dealii::FunctionParser<dim>> body_force;
 
     static void

@@ -32,7 +32,7 @@ namespace signorini
    * comes from), the finite element (Q1 on quadrilaterals/hexahedra, P1 on
    * triangles/tetrahedra, dim components), the mapping and quadratures, the
    * dofs with their index sets, and the constraints that stay fixed within a
-   * cycle: hanging nodes, and those plus the Dirichlet data (and, in an
+   * load step: hanging nodes, and those plus the Dirichlet data (and, in an
    * axisymmetric model, u_r = 0 on the axis). It gives the weight of the
    * measure at a point, 1, or 2 pi r in an axisymmetric model.
    */
@@ -96,6 +96,14 @@ namespace signorini
     load(const std::string               &file,
          const std::vector<VectorType *> &vectors,
          dealii::Vector<float>           &cell_data);
+
+    /** The Dirichlet data at the pseudo-time @p t of the load history:
+     * sets the time of Boundary conditions/Prescribed displacement and, once
+     * the mesh has dofs, makes constraints() anew with its values (the same
+     * dofs constrained). Throws InputError if the displacement is not
+     * finite at a Dirichlet node. */
+    void
+    set_time(const double t);
 
     /** Refines the mesh globally @p times and sets up its dofs. */
     void
@@ -184,6 +192,11 @@ namespace signorini
   private:
     void
     setup_dofs();
+
+    /** The hanging nodes, the Dirichlet data at the time of the prescribed
+     * displacement and (axisymmetric) the axis: constraints(). */
+    void
+    make_fixed_constraints();
 
     const Geometry<dim>           &geometry;
     const AdaptationFactory        adaptation_factory;

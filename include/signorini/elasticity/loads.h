@@ -27,8 +27,15 @@ namespace signorini
     Loads(const BoundaryConditions<dim> &boundary_conditions,
           const Discretisation<dim>     &discretisation);
 
+    /** The loads at the pseudo-time @p t of the load history: the time of
+     * the traction and body force functions, and of the traction
+     * resultant at the next assemble(). */
+    void
+    set_time(const double t);
+
     /** The load vector f [N] of the current mesh, with the hanging nodes and
-     * Dirichlet dofs condensed; sets the traction of this mesh. */
+     * Dirichlet dofs condensed; sets the traction of this mesh. Throws
+     * InputError if a load is not finite. */
     void
     assemble(dealii::TrilinosWrappers::MPI::Vector &load);
 
@@ -66,6 +73,8 @@ namespace signorini
     const Discretisation<dim>             &discretisation;
     const dealii::Function<dim>           *traction = nullptr;
     std::unique_ptr<dealii::Function<dim>> uniform_traction;
+    /** The pseudo-time of the loads. */
+    double time = 0.;
   };
 } // namespace signorini
 

@@ -103,6 +103,12 @@ namespace signorini
              const std::string &entry,
              const std::string &why = "");
 
+    /** @p text as a finite number ("0.5", "1e-3"); throws naming @p entry
+     * for text that is not a number ("'abc' is not a number") or not a
+     * finite one ("'inf' is not a finite number"). */
+    double
+    number(const std::string &text, const std::string &entry);
+
     /** "x0, x1[, x2]" with exactly @p dim coordinates, each a finite
      * number. */
     template <int dim>

@@ -26,13 +26,15 @@ namespace signorini
   {
   public:
     /** A function of @p n_components components for @p entry, whose text
-     * is @p text; initialize() it as a FunctionParser. */
+     * is @p text; initialize() it as a FunctionParser (@p time_dependent:
+     * with the time variable t). */
     ParsedFunction(const unsigned int n_components,
                    const std::string &entry,
-                   const std::string &text);
+                   const std::string &text,
+                   const bool         time_dependent = false);
 
     /** The value; one that is not finite is remembered once watch() was
-     * called. */
+     * called, with the point and the time. */
     double
     value(const dealii::Point<dim> &p,
           const unsigned int        component = 0) const override;
@@ -43,9 +45,9 @@ namespace signorini
 
     /**
      * Throws, on every process of @p comm, an InputError naming the entry,
-     * the text and the point if this function evaluated to a value that is
-     * not finite on any process (the first such point of the lowest such
-     * process). Collective.
+     * the text and the point (and the pseudo-time t, if the text uses t) if
+     * this function evaluated to a value that is not finite on any process
+     * (the first such point of the lowest such process). Collective.
      */
     void
     check_finite(const MPI_Comm comm) const;
@@ -62,17 +64,52 @@ namespace signorini
     const std::string entry;
     const std::string text;
     /** Each expression of the text is the number 0. */
-    bool               zero;
+    bool zero;
+    /** The function depends on time and its text names it, t. */
+    bool               uses_time;
     bool               watching = false;
     mutable std::mutex mutex;
-    mutable std::optional<std::pair<dealii::Point<dim>, double>> non_finite;
+    /** The first point where the value was not finite, the value and the
+     * time. */
+    struct NonFinite
+    {
+      dealii::Point<dim> point;
+      double             value;
+      double             time;
+    };
+    mutable std::optional<NonFinite> non_finite;
   };
+
+  /** Whether the muparser expression @p text names the variable @p name
+   * (as a whole identifier: `t` in `0.1*t`, not in `sqrt(x)`). */
+  bool
+  names_variable(const std::string &text, const std::string &name);
+
+  /**
+   * Initializes @p function with the muparser @p expressions (one per
+   * component) of the comma-separated @p variables, the constant `pi` and
+   * every name of @p constants; with @p time_dependent the last variable is
+   * the function's time (FunctionTime::set_time). Throws an InputError
+   * naming @p entry and its @p text if an expression does not parse (some
+   * errors muparser reports only on a first evaluation, at the origin).
+   */
+  template <int dim>
+  void
+  initialize_parser(dealii::FunctionParser<dim>         &function,
+                    const std::string                   &variables,
+                    const std::vector<std::string>      &expressions,
+                    const std::map<std::string, double> &constants,
+                    const bool                           time_dependent,
+                    const std::string                   &entry,
+                    const std::string                   &text);
 
   /**
    * A muparser function of x, y[, z] from a parameter entry: @p n_components
    * expressions separated by ';', or a single expression used for every
    * component. The constant `pi` is defined, and so is every name of
-   * @p constants. Throws an InputError naming @p entry if the text does not
+   * @p constants; with @p time_dependent also the variable t, the
+   * pseudo-time of the load history, which FunctionTime::set_time() sets (0
+   * until then). Throws an InputError naming @p entry if the text does not
    * parse. The function is a ParsedFunction: check_finite() tells whether
    * it evaluated to a value that is not finite.
    */
@@ -81,7 +118,8 @@ namespace signorini
   parse_function(const std::string                   &text,
                  const unsigned int                   n_components,
                  const std::string                   &entry,
-                 const std::map<std::string, double> &constants = {});
+                 const std::map<std::string, double> &constants      = {},
+                 const bool                           time_dependent = false);
 
   /** ParsedFunction::check_finite() of @p function if it is a
    * ParsedFunction; nothing for other functions. Collective over @p comm

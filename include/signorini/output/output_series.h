@@ -11,8 +11,11 @@ namespace signorini
    * The files a run owns in its output directory: the series
    * solution-CC.vtu, solution-CC.pvtu and their pieces solution-CC.RRRR.vtu,
    * contact_pressure-CC.csv and checkpoint-CC.* for cycles CC, and
-   * solution.pvd, statistics.csv and timings.csv; each also as the
-   * temporary NAME.part of an interrupted write. (obstacle.vtu and
+   * solution.pvd, statistics.csv and timings.csv; of a load history
+   * force_displacement.csv and force_displacement.gnuplot, and the final
+   * cycle's history-SSS.vtu, history-SSS.pvtu, their pieces
+   * history-SSS.RRRR.vtu for load steps SSS, and history.pvd; each also as
+   * the temporary NAME.part of an interrupted write. (obstacle.vtu and
    * parameters.prm are rewritten at the start of every run.) Nothing else in
    * the directory is the run's.
    */
@@ -29,6 +32,9 @@ namespace signorini
       bool checkpoint = false;
       /** A temporary file of an interrupted write. */
       bool partial = false;
+      /** A file of the final cycle's load steps (history-SSS.*,
+       * history.pvd). */
+      bool history = false;
     };
 
     /** Classifies @p name, a file name without its folder. */
@@ -41,13 +47,16 @@ namespace signorini
      * empty) removes every series file, so that a run that stops early leaves
      * no cycles of an earlier one. A run resumed after cycle k keeps the files
      * of cycles 0..k and the checkpoint of cycle k, and removes those of
-     * later cycles, other checkpoints and temporaries. Files outside the
-     * series are never touched; a missing directory is fine. Returns the
-     * names removed; throws std::runtime_error if one cannot be removed.
+     * later cycles, other checkpoints and temporaries. The files of the
+     * load steps are those of cycle @p history_cycle (the final one; none:
+     * of no cycle kept). Files outside the series are never touched; a
+     * missing directory is fine. Returns the names removed; throws
+     * std::runtime_error if one cannot be removed.
      */
     std::vector<std::string>
     remove_stale_files(const std::string                 &directory,
-                       const std::optional<unsigned int> &resumed_cycle);
+                       const std::optional<unsigned int> &resumed_cycle,
+                       const std::optional<unsigned int> &history_cycle = {});
   } // namespace output_series
 } // namespace signorini
 

@@ -34,10 +34,12 @@ namespace signorini
   };
 
   /**
-   * What a run has recorded so far: a statistics row and a timings row per
-   * cycle, and the solution files of the series. It writes the series'
-   * records (solution.pvd, statistics.csv, timings.csv) and saves and loads
-   * itself for checkpoints.
+   * What a run has recorded so far: a statistics row per cycle (per load
+   * step of a load history) and a timings row per cycle, the solution files
+   * of the series, and with a load history the force-displacement rows and
+   * the final cycle's file per step. It writes the series' records
+   * (solution.pvd, statistics.csv, timings.csv; force_displacement.csv and
+   * history.pvd) and saves and loads itself for checkpoints.
    */
   class RunRecord
   {
@@ -45,9 +47,9 @@ namespace signorini
     void
     add_statistics(const StatisticsRow &row);
 
-    /** The cycle of the last statistics row, if any. */
-    std::optional<unsigned int>
-    last_cycle() const;
+    /** A row of force_displacement.csv. */
+    void
+    add_force_displacement(const StatisticsRow &row);
 
     void
     add_timings(const CycleTimings &row);
@@ -57,8 +59,14 @@ namespace signorini
     void
     add_solution_file(const unsigned int cycle, const std::string &name);
 
+    /** Load step file @p name of the final cycle at pseudo-time @p time
+     * (relative to the output directory). */
+    void
+    add_history_file(const double time, const std::string &name);
+
     /** The records that list the cycles so far, by file name:
-     * solution.pvd and statistics.csv. */
+     * solution.pvd and statistics.csv, and force_displacement.csv and
+     * history.pvd once they have rows. */
     std::map<std::string, std::string>
     series_records() const;
 
@@ -70,13 +78,16 @@ namespace signorini
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &statistics &timings &solution_files;
+      archive &statistics &timings &solution_files &force_displacement
+        &history_files;
     }
 
   private:
     std::vector<StatisticsRow>                  statistics;
     std::vector<CycleTimings>                   timings;
     std::vector<std::pair<double, std::string>> solution_files;
+    std::vector<StatisticsRow>                  force_displacement;
+    std::vector<std::pair<double, std::string>> history_files;
   };
 } // namespace signorini
 

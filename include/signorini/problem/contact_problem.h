@@ -22,14 +22,18 @@
 
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 
 namespace signorini
 {
+  struct VtuPiece;
+
   /**
    * The Signorini problem: a linear elastic body, loads and supports, and a
    * rigid obstacle, solved in adaptive cycles, in the verbs of step-42:
-   * setup_system, solve, refine_grid, output_results, run. It owns the
+   * setup_system, solve, refine_grid, output_results, run, with a
+   * quasi-static load history replayed on each cycle's mesh. It owns the
    * cycle's state (displacement, contact pressure, error indicators) and
    * connects the rooms that do the work: the Discretisation, the
    * ElasticOperator, the Obstacle and the ContactSurface, the
@@ -56,9 +60,26 @@ namespace signorini
     // run.cc
     void
     run_cycles(const bool resume);
-    /** The contact problem of one cycle by the formulation. */
+    /** The loads, the Dirichlet data (the constraints anew, once there is a
+     * mesh) and the obstacles at the pseudo-time @p t of the load history.
+     * Throws InputError where one is not finite. */
+    void
+    set_time(const double t);
+    /** The contact problem of one cycle (of one load step) by the
+     * formulation. */
     void
     solve(const unsigned int cycle);
+    /** Cycle @p cycle's load history from zero displacement and pressure:
+     * each step but the last solved, estimated, recorded and written
+     * (output_step()), then the last step solved; run_cycles() finishes
+     * it as a cycle without a history. */
+    void
+    solve_history(const unsigned int cycle);
+    /** Starts load step @p step of the history: the loads, constraints,
+     * obstacles and contact surface at its time, and NewtonDriver's
+     * start_step(). */
+    void
+    start_load_step(const unsigned int step);
     void
     estimate_error();
     void
@@ -70,14 +91,43 @@ namespace signorini
     setup_system();
 
     // output.cc
+    /** Writes parameters.prm, obstacle.vtu (the obstacles at the end of
+     * the load history) and, with a load history, the chart script
+     * force_displacement.gnuplot. */
     void
     write_obstacle_and_parameters() const;
+    /** The gnuplot script that draws the final cycle's force-displacement
+     * curves from force_displacement.csv. */
     void
-    record_statistics(const unsigned int cycle);
+    write_force_displacement_chart(std::ostream &out) const;
+    /** The statistics row of load step @p step of cycle @p cycle (the
+     * columns step and time only with a load history, which also gets its
+     * force-displacement row). */
+    void
+    record_statistics(const unsigned int cycle, const unsigned int step);
     /** Writes the cycle's VTU file (on one process in the background, with
-     * the records queued after it) and its records. */
+     * the records queued after it) and its records; in the final cycle of
+     * a load history also its last step's history file. */
     void
     output_results(const unsigned int cycle);
+    /** After load step @p step (not the last) of cycle @p cycle: in the
+     * final cycle the step's history file, and the records so far. */
+    void
+    output_step(const unsigned int cycle, const unsigned int step);
+    /** The current solution's fields as a VTU piece of this process. */
+    std::shared_ptr<const VtuPiece>
+    solution_piece();
+    /** Writes @p piece as BASE.vtu (one process: queued for the background
+     * writer, compressed on @p threads threads) or BASE.pvtu with a piece
+     * per process (collective); returns the name of the file. */
+    std::string
+    write_solution(const std::shared_ptr<const VtuPiece> &piece,
+                   const std::string                     &base,
+                   const unsigned int                     threads);
+    /** Writes the series' records as they are now (one process: queued for
+     * the background writer). */
+    void
+    write_records();
 
     // resume.cc
     /** Takes over the output directory (removing what an earlier run left
@@ -136,7 +186,9 @@ namespace signorini
     NewtonDriver<dim>     newton;
     dealii::Vector<float> estimated_error_per_cell;
 
-    RunRecord                   record;
+    RunRecord record;
+    /** The last cycle whose results and checkpoint are written, if any. */
+    std::optional<unsigned int> finished_cycle;
     std::unique_ptr<Checkpoint> checkpoint;
     /** Last, so that it is destroyed first: the files being written in the
      * background refer to the members above. */

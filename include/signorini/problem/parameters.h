@@ -15,6 +15,7 @@
 #include <signorini/output/checkpoint.h>
 #include <signorini/output/output_parameters.h>
 #include <signorini/postprocessing/reference.h>
+#include <signorini/problem/load_history.h>
 
 #include <string>
 #include <vector>
@@ -47,6 +48,7 @@ namespace signorini
     FrictionParameters      friction;
     LinearSolverParameters  linear_solver;
     Refinement              refinement;
+    LoadHistory             load_history;
     OutputParameters<dim>   output;
     Reference<dim>          reference;
     CheckpointParameters    checkpoint;
