@@ -82,8 +82,8 @@ namespace signorini
                     "# travel against the travel, the direction of its "
                     "displacement at the last step.\n" :
                     "# (the final cycle's steps): the size of each "
-                    "obstacle's force on the body against\n"
-                    "# the pseudo-time t.\n")
+                    "obstacle's force on the body and its components\n"
+                    "# against the pseudo-time t.\n")
         << "set datafile separator ','\n"
            "set datafile columnheaders\n"
            "set terminal pngcairo size 800,560 font ',11'\n"
@@ -116,12 +116,27 @@ namespace signorini
             along_travel += (along_travel.empty() ? "" : " + ") + e + "*" + u;
             along_force += (along_force.empty() ? "" : " + ") + e + "*" + f;
           }
-        curves.push_back(
-          "'force_displacement.csv' using (column('cycle') == last ? " +
-          (moves ? along_travel : std::string("column('time')")) + " : NaN):(" +
-          (moves ? along_force : "sqrt(" + size + ")") +
-          ") with linespoints title 'Obstacle" + (n == "1" ? "" : " " + n) +
-          "'");
+        const std::string title = "Obstacle" + (n == "1" ? "" : " " + n);
+        if (moves)
+          curves.push_back(
+            "'force_displacement.csv' using (column('cycle') == last ? " +
+            along_travel + " : NaN):(" + along_force +
+            ") with linespoints title '" + title + "'");
+        else
+          {
+            // With friction the components tell the normal force from the
+            // tangential one: the size and each component.
+            curves.push_back("'force_displacement.csv' using (column('cycle') "
+                             "== last ? column('time') : NaN):(sqrt(" +
+                             size + ")) with linespoints title '" + title +
+                             "'");
+            for (unsigned int d = 0; d < dim; ++d)
+              curves.push_back(
+                "'force_displacement.csv' using (column('cycle') == last ? "
+                "column('time') : NaN):(column('force" +
+                n + "_" + axes[d] + "')) with lines title '" + title + ", " +
+                axes[d] + "'");
+          }
       }
     if (curves.empty())
       out << "# (no obstacle: nothing to draw)\n";
