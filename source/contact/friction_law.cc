@@ -75,22 +75,11 @@ namespace signorini
   FrictionLaw<dim>::state(const ContactNode<dim>  &node,
                           const NodeTraction<dim> &traction) const
   {
-    if (!(traction.sigma > 0))
-      return NodeState::open;
-    if (!frictional(node))
-      return NodeState::closed;
+    if (!(traction.sigma > 0) || !frictional(node))
+      return FrictionlessLaw<dim>::state(node, traction);
     return traction.tangential.norm() < bound(node, traction.sigma) ?
              NodeState::stick :
              NodeState::slip;
-  }
-
-  template <int dim>
-  double
-  FrictionLaw<dim>::complementarity_force(
-    const ContactNode<dim>  &node,
-    const NodeTraction<dim> &traction) const
-  {
-    return node.mass * std::max(0., traction.sigma);
   }
 
   template <int dim>
@@ -114,12 +103,11 @@ namespace signorini
                                std::vector<NodeCondition<dim>> &conditions,
                                std::vector<NodeEquation<dim>>  &equations) const
   {
-    if (!node.in_contact())
+    // n.u = -gap in contact, then the tangential part of the state.
+    FrictionlessLaw<dim>::conditions(node, traction, conditions, equations);
+    if (conditions.empty())
       return;
-    unsigned int along = 0;
-    while (node.dofs[along] != node.scalar_dof)
-      ++along;
-    conditions.push_back({node.normal, -node.gap, along});
+    const unsigned int along = conditions.front().component;
     // Tangents the supports hold need no condition (and have no equation).
     if (node.state == NodeState::stick)
       {

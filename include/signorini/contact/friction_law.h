@@ -1,7 +1,7 @@
 #ifndef signorini_contact_friction_law_h
 #define signorini_contact_friction_law_h
 
-#include <signorini/contact/contact_law.h>
+#include <signorini/contact/frictionless_law.h>
 
 #include <vector>
 
@@ -24,10 +24,11 @@ namespace signorini
    *   nodal force f, with d from the last state update.
    * The complementarity function of the tangential force is m b zeta /
    * max(b, |zeta|) (Alart-Curnier; Hueber, Stadler and Wohlmuth 2008). A
-   * vertex at a corner of several obstacles is frictionless.
+   * vertex at a corner of several obstacles is frictionless. The normal
+   * part (complementarity, the condition n.u = -gap) is FrictionlessLaw's.
    */
   template <int dim>
-  class FrictionLaw : public ContactLaw<dim>
+  class FrictionLaw : public FrictionlessLaw<dim>
   {
   public:
     /** @p coefficient, @p slip_bound: mu and s [MPa] of each obstacle of
@@ -47,10 +48,6 @@ namespace signorini
     NodeState
     state(const ContactNode<dim>  &node,
           const NodeTraction<dim> &traction) const override;
-
-    double
-    complementarity_force(const ContactNode<dim>  &node,
-                          const NodeTraction<dim> &traction) const override;
 
     std::optional<dealii::Tensor<1, dim>>
     tangential_force(const ContactNode<dim>  &node,
