@@ -27,6 +27,26 @@ namespace signorini
 
   namespace
   {
+
+    /** Coordinates [mm] beyond this are not a body the program can mesh:
+     * its areas and energies overflow, and round-off of its size exceeds
+     * its cells (a body of 1e300 mm was said to be free to rotate). */
+    constexpr double largest_coordinate = 1e9;
+
+    /** Throws an InputError naming @p entry if a coordinate of @p point is
+     * beyond largest_coordinate. */
+    template <int dim>
+    void
+    check_size(const Point<dim> &point, const std::string &entry)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (std::abs(point[d]) > largest_coordinate)
+          throw InputError(entry,
+                           number(point[d]) +
+                             " mm is beyond 1e9 mm (1000 km), more than "
+                             "the program can mesh: lengths are in mm; is "
+                             "the unit right?");
+    }
     template <int dim>
     const Choices<typename Geometry<dim>::Type> shape_types{
       {Geometry<dim>::Type::rectangle, "rectangle"},
@@ -270,6 +290,8 @@ namespace signorini
             throw InputError("Geometry/Upper right corner",
                              "must exceed the lower left corner in every "
                              "coordinate");
+        check_size(lower_left, "Geometry/Lower left corner");
+        check_size(upper_right, "Geometry/Upper right corner");
       }
     cell_type = cell_types.value(prm.get("Cell type"), "Geometry/Cell type");
     mesh_size = prm.get_double("Mesh size");
@@ -280,6 +302,10 @@ namespace signorini
         radius = prm.get_double("Radius");
         if (!(radius > 0))
           throw InputError("Geometry/Radius", "must be positive");
+        check_size(center, "Geometry/Center");
+        Point<dim> far;
+        far[0] = radius;
+        check_size(far, "Geometry/Radius");
       }
     if (type == Type::gmsh)
       {
