@@ -9,17 +9,14 @@ namespace signorini
 
   namespace
   {
-    /** The free part of @p direction at @p node: below this, the supports
-     * hold the node along it. */
+    /** Whether the supports hold @p node along the unit direction @p v
+     * (its part along the node's free components is none). */
     template <int dim>
     bool
     held_by_supports(const ContactNode<dim> &node, const Tensor<1, dim> &v)
     {
-      double free = 0.;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (node.free[d])
-          free += v[d] * v[d];
-      return free < 1e-16;
+      return ContactSurface<dim>::free_part(v, node.free) <
+             ContactSurface<dim>::fixed_along_normal;
     }
   } // namespace
 

@@ -206,6 +206,15 @@ namespace signorini
     std::pair<unsigned int, std::size_t>
     active_set_signature() const;
 
+    /** Below this, the free part of a unit direction is none: the node
+     * cannot move along it. */
+    static constexpr double fixed_along_normal = 1e-8;
+
+    /** The length of @p normal's part along the @p free components. */
+    static double
+    free_part(const dealii::Tensor<1, dim> &normal,
+              const std::array<bool, dim>  &free);
+
   private:
     /** A vertex of the contact boundary with its gap and normal to every
      * obstacle. */
@@ -219,14 +228,6 @@ namespace signorini
       std::set<dealii::types::boundary_id>             boundary_ids;
     };
 
-    /** Below this, the free part of a unit normal is none: the node cannot
-     * move along it. */
-    static constexpr double fixed_along_normal = 1e-8;
-
-    /** The length of @p normal's part along the @p free components. */
-    static double
-    free_part(const dealii::Tensor<1, dim> &normal,
-              const std::array<bool, dim>  &free);
 
     /** Throws @p error of the first process that has one (by rank) on
      * every process. */
