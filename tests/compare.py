@@ -72,10 +72,10 @@ KINDS = [
     ("residual", r"iteration\s+\d+: residual$", NEVER),
     ("count", r"multigrid CG$", NEVER),
     ("force", r"(load|supports|integrated pressure|force)" + VECTOR,
-     r"(contact_force|support_reaction)\d*_[xyz]"),
+     r"(contact_force|support_reaction|force)\d*_[xyz]"),
     ("displacement", r"(\bu|penetration)" + VECTOR,
-     r"probe\d+_u[xyz]|max_penetration"),
-    ("pressure", r"max pressure$", r"max_pressure\d*"),
+     r"probe\d+_u[xyz]|max_penetration|displacement\d+_[xyz]"),
+    ("pressure", r"max pressure$", r"max_pressure\d*|max_shear"),
     ("dimensionless",
      r"(relative mismatch|pressure error|width error|relative difference)$",
      r"equilibrium_error|max_pressure_error|contact_width_error"
