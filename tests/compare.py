@@ -77,9 +77,10 @@ KINDS = [
      r"probe\d+_u[xyz]|max_penetration|displacement\d+_[xyz]"),
     ("pressure", r"max pressure$", r"max_pressure\d*|max_shear"),
     ("dimensionless",
-     r"(relative mismatch|pressure error|width error|relative difference)$",
+     r"(relative mismatch|pressure error|width error|shear error"
+     r"|relative difference)$",
      r"equilibrium_error|max_pressure_error|contact_width_error"
-     r"|pressure_error"),
+     r"|stick_width_error|max_shear_error|pressure_error"),
     ("energy error", r"energy error$", r"energy_error"),
 ]
 

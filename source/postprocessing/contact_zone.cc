@@ -4,6 +4,7 @@
 
 #include <signorini/input/parsed_function.h>
 #include <signorini/postprocessing/contact_zone.h>
+#include <signorini/postprocessing/zone_edges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,7 @@ namespace signorini
   evaluate_contact_zone(const Discretisation<dim>           &discretisation,
                         const ContactSurface<dim>           &surface,
                         const TrilinosWrappers::MPI::Vector &pressure,
+                        const TrilinosWrappers::MPI::Vector &solution,
                         const Reference<dim>                &reference,
                         const TrilinosWrappers::MPI::Vector *tangential)
   {
@@ -109,6 +111,8 @@ namespace signorini
       zone.supported_force = Utilities::MPI::sum(zone.supported_force, comm);
     max_pressure      = Utilities::MPI::max(max_pressure, comm);
     zone.max_pressure = max_pressure == none ? 0. : max_pressure;
+    const auto edges =
+      estimate_zone_edges(discretisation, surface, pressure, solution);
     for (unsigned int k = 0; k < n_obstacles; ++k)
       {
         auto &contact        = zone.obstacles[k];
@@ -127,27 +131,45 @@ namespace signorini
           contact_zone_directions(length > 0 ? mean_normal[k] / length :
                                                mean_normal[k],
                                   discretisation.axisymmetric());
-        // The extent of the nodes in contact along each direction; the
-        // width is the smallest (the same on any number of processes: a
-        // near tie of two axes in the mean normal no longer picks one).
-        contact.contact_width = std::numeric_limits<double>::max();
-        for (const auto &tangent : across)
-          {
-            double low = std::numeric_limits<double>::max(), high = -low;
-            for (const auto &node : nodes)
-              if (node.owned && node.in_contact() && node.obstacle == k)
-                {
-                  const double s = tangent * node.position;
-                  low            = std::min(low, s);
-                  high           = std::max(high, s);
-                }
-            low  = Utilities::MPI::min(low, comm);
-            high = Utilities::MPI::max(high, comm);
-            contact.contact_width =
-              std::min(contact.contact_width, high >= low ? high - low : 0.);
-          }
+        // The extent along each direction of the nodes in contact (or
+        // sticking) and of the zone's edges between the nodes; the width
+        // is the smallest (the same on any number of processes: a near tie
+        // of two axes in the mean normal no longer picks one).
+        const auto extent = [&](const auto                    &inside,
+                                const std::vector<Point<dim>> &edge_points) {
+          double width = std::numeric_limits<double>::max();
+          for (const auto &tangent : across)
+            {
+              double     low = std::numeric_limits<double>::max(), high = -low;
+              const auto add = [&](const Point<dim> &x) {
+                low  = std::min(low, tangent * x);
+                high = std::max(high, tangent * x);
+              };
+              for (const auto &node : nodes)
+                if (node.owned && node.obstacle == k && inside(node))
+                  add(node.position);
+              for (const auto &x : edge_points)
+                add(x);
+              low   = Utilities::MPI::min(low, comm);
+              high  = Utilities::MPI::max(high, comm);
+              width = std::min(width, high >= low ? high - low : 0.);
+            }
+          return width;
+        };
+        contact.contact_width =
+          extent([](const ContactNode<dim> &node) { return node.in_contact(); },
+                 edges[k].contact);
         zone.contact_width =
           std::max(zone.contact_width, contact.contact_width);
+        if (tangential)
+          {
+            contact.stick_width = extent(
+              [](const ContactNode<dim> &node) {
+                return node.state == NodeState::stick;
+              },
+              edges[k].stick);
+            zone.stick_width = std::max(zone.stick_width, contact.stick_width);
+          }
       }
 
     // The nodal pressures sit at one dof per node, the others hold zero:
@@ -335,11 +357,13 @@ namespace signorini
   evaluate_contact_zone(const Discretisation<2> &,
                         const ContactSurface<2> &,
                         const TrilinosWrappers::MPI::Vector &,
+                        const TrilinosWrappers::MPI::Vector &,
                         const Reference<2> &,
                         const TrilinosWrappers::MPI::Vector *);
   template ContactZone<3>
   evaluate_contact_zone(const Discretisation<3> &,
                         const ContactSurface<3> &,
+                        const TrilinosWrappers::MPI::Vector &,
                         const TrilinosWrappers::MPI::Vector &,
                         const Reference<3> &,
                         const TrilinosWrappers::MPI::Vector *);

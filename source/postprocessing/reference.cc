@@ -6,16 +6,52 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <regex>
 
 namespace signorini
 {
   using namespace dealii;
 
+  ReferenceNumber::ReferenceNumber(
+    const std::string                   &text,
+    const std::string                   &entry,
+    const std::map<std::string, double> &constants,
+    const bool                           at_least_zero,
+    const std::string                   &why)
+    : entry(entry)
+    , text(text)
+    , at_least_zero(at_least_zero)
+    , why(why)
+  {
+    if (text.empty())
+      return;
+    function = parse_function<1>(text, 1, entry, constants, true);
+    // A number that does not depend on t is checked now.
+    static const std::regex uses_time("(^|[^A-Za-z0-9_])t($|[^A-Za-z0-9_])");
+    time_dependent = std::regex_search(text, uses_time);
+    if (!time_dependent)
+      at(0.);
+  }
+
+  double
+  ReferenceNumber::at(const double t) const
+  {
+    function->set_time(t);
+    const double value = function->value(Point<1>());
+    if (!std::isfinite(value))
+      throw InputError(entry,
+                       "'" + text + "' is not a finite number" +
+                         (time_dependent ? " at t = " + entry_text::of(t) :
+                                           std::string()));
+    if (at_least_zero)
+      parse::in_range(value, parse::Range::at_least(0.), entry, why);
+    return value;
+  }
+
   template <int dim>
   void
   Reference<dim>::declare_parameters(ParameterHandler &prm)
   {
-    const Reference<dim> defaults;
     prm.enter_subsection("Reference");
     prm.declare_entry(
       "Function constants",
@@ -34,26 +70,41 @@ namespace signorini
       "pressure_error: the L2 norm over the contact boundary of the "
       "computed minus this pressure, relative to the L2 norm of this one.");
     prm.declare_entry("Maximum pressure",
-                      entry_text::of(defaults.max_pressure),
+                      "",
                       Patterns::Anything(),
                       "Closed-form peak contact pressure [MPa], a number or "
-                      "an expression of the constants. If given, "
+                      "an expression of the constants and of the load "
+                      "history's pseudo-time t. If given, "
                       "statistics.csv gains max_pressure_error, the "
                       "relative error of max_pressure.");
     prm.declare_entry("Contact width",
-                      entry_text::of(defaults.contact_width),
+                      "",
                       Patterns::Anything(),
                       "Closed-form extent of the contact zone along x [mm], "
-                      "a number or an expression of the constants. If given, "
+                      "a number or an expression of the constants and of t. "
+                      "If given, "
                       "statistics.csv gains contact_width_error, the "
                       "relative error of contact_width.");
+    prm.declare_entry("Stick width",
+                      "",
+                      Patterns::Anything(),
+                      "With friction: closed-form extent of the stick zone "
+                      "[mm], along the same direction as the contact width; a "
+                      "number or an expression of the constants and of t. "
+                      "If given, statistics.csv gains stick_width_error.");
+    prm.declare_entry("Maximum shear",
+                      "",
+                      Patterns::Anything(),
+                      "With friction: closed-form peak shear traction [MPa]; "
+                      "a number or an expression of the constants and of t. "
+                      "If given, statistics.csv gains max_shear_error.");
     prm.declare_entry(
       "Energy",
-      entry_text::of(defaults.energy),
+      "",
       Patterns::Anything(),
       "Potential energy 1/2 a(u,u) - f(u) of the exact solution [N mm; per "
       "mm of thickness in 2D], e.g. from an overkill run; a number or an "
-      "expression of the constants. If given, "
+      "expression of the constants and of t. If given, "
       "statistics.csv gains energy_error = sqrt((J(u_h) - J(u)) / |J(u)|), "
       "the relative energy-norm error.");
     prm.leave_subsection();
@@ -91,32 +142,19 @@ namespace signorini
                                              1,
                                              "Reference/Contact pressure",
                                              constants);
-    // A number, or an expression of the constants.
-    const auto number = [&](const std::string &name) -> std::optional<double> {
-      const std::string text = prm.get(name);
-      if (text.empty())
-        return {};
-      const double value =
-        parse_function<1>(text, 1, "Reference/" + name, constants)
-          ->value(Point<1>());
-      if (!std::isfinite(value))
-        throw InputError("Reference/" + name,
-                         "'" + text + "' is not a finite number");
-      return value;
+    const auto number = [&](const std::string &name,
+                            const std::string &why = "") {
+      return ReferenceNumber(
+        prm.get(name), "Reference/" + name, constants, true, why);
     };
-    max_pressure  = number("Maximum pressure");
+    max_pressure =
+      number("Maximum pressure", "a contact pressure is not negative");
     contact_width = number("Contact width");
-    energy        = number("Energy");
+    stick_width   = number("Stick width");
+    max_shear     = number("Maximum shear");
+    energy =
+      ReferenceNumber(prm.get("Energy"), "Reference/Energy", constants, false);
     prm.leave_subsection();
-    if (max_pressure)
-      parse::in_range(*max_pressure,
-                      parse::Range::at_least(0.),
-                      "Reference/Maximum pressure",
-                      "a contact pressure is not negative");
-    if (contact_width)
-      parse::in_range(*contact_width,
-                      parse::Range::at_least(0.),
-                      "Reference/Contact width");
   }
 
   template struct Reference<2>;

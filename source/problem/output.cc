@@ -193,6 +193,7 @@ namespace signorini
       evaluate_contact_zone(discretisation,
                             contact_surface,
                             pressure,
+                            solution,
                             parameters.reference,
                             tangential.size() > 0 ? &tangential : nullptr);
     if (zone.supported)
@@ -205,14 +206,12 @@ namespace signorini
     penetration = Utilities::MPI::max(penetration, mpi_communicator);
     row.add_count("active_set", active);
     // With friction, how many of them stick and slip, the extent of the
-    // sticking nodes along their first tangent, and the largest shear
-    // traction.
+    // stick zone, and the largest shear traction.
+    double max_shear = 0.;
     if (law->path_dependent())
       {
         row.add_count("stick", Utilities::MPI::sum(sticking, mpi_communicator));
         row.add_count("slip", Utilities::MPI::sum(slipping, mpi_communicator));
-        double low = std::numeric_limits<double>::max(), high = -low,
-               max_shear  = 0.;
         const auto &shear = newton.tangential_traction();
         for (const auto &node : contact_surface.nodes())
           if (node.owned)
@@ -221,17 +220,10 @@ namespace signorini
               for (unsigned int d = 0; d < dim; ++d)
                 q[d] = shear(node.dofs[d]);
               max_shear = std::max(max_shear, q.norm());
-              if (node.state == NodeState::stick)
-                {
-                  const double s = node.tangents[0] * node.position;
-                  low            = std::min(low, s);
-                  high           = std::max(high, s);
-                }
             }
-        low  = Utilities::MPI::min(low, mpi_communicator);
-        high = Utilities::MPI::max(high, mpi_communicator);
-        row.add("stick_width", high >= low ? high - low : 0.);
-        row.add("max_shear", Utilities::MPI::max(max_shear, mpi_communicator));
+        row.add("stick_width", zone.stick_width);
+        max_shear = Utilities::MPI::max(max_shear, mpi_communicator);
+        row.add("max_shear", max_shear);
       }
     formulation->report(row, pcout);
     for (unsigned int d = 0; d < dim; ++d)
@@ -276,26 +268,40 @@ namespace signorini
     row.add("equilibrium_error", equilibrium_error);
     row.add("energy", balance.energy);
 
-    const auto &reference      = parameters.reference;
-    const auto  relative_error = [](const double                 value,
-                                   const std::optional<double> &exact) {
+    // The reference numbers at the step's pseudo-time.
+    const auto  &reference      = parameters.reference;
+    const double time           = history.time(step);
+    const auto   relative_error = [time](const double           value,
+                                       const ReferenceNumber &exact) {
       if (!exact)
         return std::numeric_limits<double>::quiet_NaN();
-      return std::abs(value - *exact) / (*exact != 0 ? std::abs(*exact) : 1.);
+      const double v = exact.at(time);
+      return std::abs(value - v) / (v != 0 ? std::abs(v) : 1.);
     };
     const double max_pressure_error =
       relative_error(zone.max_pressure, reference.max_pressure);
     const double contact_width_error =
       relative_error(zone.contact_width, reference.contact_width);
-    const double energy_error =
-      reference.energy ?
-        std::sqrt(std::abs(balance.energy - *reference.energy) /
-                  (*reference.energy != 0 ? std::abs(*reference.energy) : 1.)) :
-        std::numeric_limits<double>::quiet_NaN();
+    const double stick_width_error =
+      relative_error(zone.stick_width, reference.stick_width);
+    const double max_shear_error =
+      relative_error(max_shear, reference.max_shear);
+    double energy_error = std::numeric_limits<double>::quiet_NaN();
+    if (reference.energy)
+      {
+        const double exact = reference.energy.at(time);
+        energy_error       = std::sqrt(std::abs(balance.energy - exact) /
+                                 (exact != 0 ? std::abs(exact) : 1.));
+      }
+    const bool friction = law->path_dependent();
     if (reference.max_pressure)
       row.add("max_pressure_error", max_pressure_error);
     if (reference.contact_width)
       row.add("contact_width_error", contact_width_error);
+    if (friction && reference.stick_width)
+      row.add("stick_width_error", stick_width_error);
+    if (friction && reference.max_shear)
+      row.add("max_shear_error", max_shear_error);
     if (reference.energy)
       row.add("energy_error", energy_error);
     if (reference.contact_pressure)
@@ -349,6 +355,10 @@ namespace signorini
       pcout << "   max pressure error " << max_pressure_error << std::endl;
     if (reference.contact_width)
       pcout << "   contact width error " << contact_width_error << std::endl;
+    if (friction && reference.stick_width)
+      pcout << "   stick width error " << stick_width_error << std::endl;
+    if (friction && reference.max_shear)
+      pcout << "   max shear error " << max_shear_error << std::endl;
     if (reference.contact_pressure)
       pcout << "   pressure error " << zone.pressure_error << std::endl;
     if (reference.energy)

@@ -19,7 +19,9 @@ namespace signorini
   {
     /** Largest nodal contact pressure [MPa]. */
     double max_pressure = 0.;
-    /** Extent of the active nodes across the contact zone [mm]: in 2D
+    /** Extent of the contact zone [mm], of its active nodes and, in 2D and
+     * axisymmetric models, of its edges between the nodes (see
+     * estimate_zone_edges): in 2D
      * along the coordinate axis least aligned with the active nodes' mean
      * normal, made tangent to it (x for a floor, y for a wall x = const);
      * in an axisymmetric model along r (the contact radius where the zone
@@ -28,6 +30,9 @@ namespace signorini
      * than the one most aligned with the normal (a round zone's diameter,
      * a line contact's width; its length is contact_area / width). */
     double contact_width = 0.;
+    /** With friction, the extent of the stick zone [mm], of its sticking
+     * nodes and edges, along the directions of contact_width. */
+    double stick_width = 0.;
     /** Measure of the contact zone [mm in 2D, mm^2 in 3D and
      * axisymmetric]: the integral
      * over the contact boundary of the interpolated indicator of the
@@ -47,6 +52,8 @@ namespace signorini
     double max_pressure = 0.;
     /** The largest contact_width of the obstacles [mm]. */
     double contact_width = 0.;
+    /** The largest stick_width of the obstacles [mm]. */
+    double stick_width = 0.;
     /** The sum of the obstacles' contact_area [mm in 2D, mm^2 in 3D and in
      * an axisymmetric model, where it is the area of revolution]. */
     double contact_area = 0.;
@@ -73,15 +80,17 @@ namespace signorini
 
   /**
    * The contact zone of the nodal contact @p pressure (at each contact
-   * node's scalar dof, ghosted): its largest value, the extent and measure
-   * of the active nodes, and the integral of the pressure field that
-   * interpolates the nodal values of each obstacle (a hanging node takes
-   * the pressure its masters give it, a supported one none), with a Gauss
-   * rule of high order, since a closed-form pressure has a square-root edge.
-   * Integrals are weighted by Discretisation::weight (over the whole revolution
-   * of an axisymmetric model). With friction, @p tangential (the obstacle's
-   * tangential traction at the contact nodes' dofs, ghosted) adds its nodal
-   * forces to each obstacle's force and to the resultant.
+   * node's scalar dof, ghosted) and the displacement @p solution (ghosted):
+   * its largest value, the extent of the zone (and with friction of its
+   * stick zone), the measure of the active nodes, and the integral of the
+   * pressure field that interpolates the nodal values of each obstacle (a
+   * hanging node takes the pressure its masters give it, a supported one none),
+   * with a Gauss rule of high order, since a closed-form pressure has a
+   * square-root edge. Integrals are weighted by Discretisation::weight (over
+   * the whole revolution of an axisymmetric model). With friction, @p
+   * tangential (the obstacle's tangential traction at the contact nodes' dofs,
+   * ghosted) adds its nodal forces to each obstacle's force and to the
+   * resultant.
    */
   template <int dim>
   ContactZone<dim>
@@ -89,6 +98,7 @@ namespace signorini
     const Discretisation<dim>                   &discretisation,
     const ContactSurface<dim>                   &surface,
     const dealii::TrilinosWrappers::MPI::Vector &pressure,
+    const dealii::TrilinosWrappers::MPI::Vector &solution,
     const Reference<dim>                        &reference,
     const dealii::TrilinosWrappers::MPI::Vector *tangential = nullptr);
 
