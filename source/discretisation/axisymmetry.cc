@@ -50,6 +50,29 @@ namespace signorini
                          "lies at x = r >= 0, its axis at x = 0");
     }
 
+    template <int dim>
+    void
+    check_off_axis(const Triangulation<dim>           &mesh,
+                   const std::set<types::boundary_id> &ids,
+                   const std::string                  &entry,
+                   const double                        tolerance)
+    {
+      std::set<types::boundary_id> off_axis;
+      for (const auto &cell : mesh.cell_iterators_on_level(0))
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && ids.count(face->boundary_id()))
+            for (const unsigned int v : face->vertex_indices())
+              if (std::abs(face->vertex(v)[0]) > tolerance)
+                off_axis.insert(face->boundary_id());
+      for (const auto id : ids)
+        if (!off_axis.count(id))
+          throw InputError(entry,
+                           "boundary id " + std::to_string(id) +
+                             " lies on the axis of revolution (r = x = 0), "
+                             "where it has no area: a traction there acts "
+                             "on nothing; load a boundary off the axis");
+    }
+
     template void
     add_axis_constraints(const DoFHandler<2> &,
                          const IndexSet &,
@@ -60,6 +83,16 @@ namespace signorini
                          const IndexSet &,
                          double,
                          AffineConstraints<double> &);
+    template void
+    check_off_axis(const Triangulation<2> &,
+                   const std::set<types::boundary_id> &,
+                   const std::string &,
+                   double);
+    template void
+    check_off_axis(const Triangulation<3> &,
+                   const std::set<types::boundary_id> &,
+                   const std::string &,
+                   double);
     template void
     check_side_of_axis(const Triangulation<2> &, const Geometry<2> &, double);
     template void

@@ -112,6 +112,12 @@ namespace signorini
          {"Boundary conditions/Traction boundary ids",
           parameters.boundary_conditions.traction_ids},
          {"Obstacle/Contact boundary ids", parameters.obstacle.contact_ids}});
+      if (discretisation.axisymmetric())
+        axisymmetry::check_off_axis(discretisation.triangulation(),
+                                    parameters.boundary_conditions.traction_ids,
+                                    "Boundary conditions/Traction boundary ids",
+                                    axisymmetry::axis_tolerance(
+                                      discretisation.body_size()));
     }
     setup_system();
     {

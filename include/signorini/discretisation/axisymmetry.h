@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string>
 
 namespace signorini
 {
@@ -98,6 +100,19 @@ namespace signorini
     check_side_of_axis(const dealii::Triangulation<dim> &coarse_mesh,
                        const Geometry<dim>              &geometry,
                        const double                      tolerance);
+
+    /**
+     * Throws an InputError naming @p entry if a boundary id of @p ids lies
+     * on the axis (every vertex of its faces at |r| <= @p tolerance) in the
+     * coarse cells of @p mesh: revolved, it has no area, and a traction
+     * there would act on nothing.
+     */
+    template <int dim>
+    void
+    check_off_axis(const dealii::Triangulation<dim>           &mesh,
+                   const std::set<dealii::types::boundary_id> &ids,
+                   const std::string                          &entry,
+                   const double                                tolerance);
 
     /**
      * The coefficient sqrt(2 pi r) of the Kelly estimator: the jumps of the
