@@ -164,6 +164,72 @@ plot '%s' u 1:2 w lp lw 2 pt 7 lc 1 t 'Kelly (rate %.2f)', \\
     return text
 
 
+def cattaneo_mindlin():
+    """prm/cattaneo_mindlin.prm at nu = 0.4999 and 0.3: the stick zone, the
+    contact width and the peak shear against Cattaneo's closed form for the
+    computed normal force P, per cycle's last step; and the shear traction
+    profile of the last cycle."""
+    runs = {"0.4999": run("cattaneo_mindlin", "prm/cattaneo_mindlin.prm", {}),
+            "0.3": run("cattaneo_mindlin_nu03", "prm/cattaneo_mindlin.prm",
+                       {"Material": {"Poisson's ratio": "0.3"},
+                        "Reference": {"Function constants": "",
+                                      "Contact pressure": "",
+                                      "Maximum pressure": "",
+                                      "Contact width": "", "Stick width": "",
+                                      "Maximum shear": ""}})}
+    radius, young, mu = 10., 1000., 0.3
+    rows = []
+    for nu, data in runs.items():
+        for r in data:
+            if r["step"] != 2:
+                continue
+            force, shear = abs(r["contact_force_y"]), abs(r["contact_force_x"])
+            a = 2 * math.sqrt(force * radius * (1 - float(nu)**2) /
+                              (math.pi * young))
+            p0 = 2 * force / (math.pi * a)
+            ratio = math.sqrt(max(0., 1 - shear / (mu * force)))
+            peak = mu * p0 * math.sqrt(min(1., shear / (mu * force)))
+            c_a = (r["stick_width"] / r["contact_width"]
+                   if r["contact_width"] > 0 else 0.)
+            rows.append([nu, "%d" % r["cycle"], "%d" % r["dofs"],
+                         "%.4f" % force, "%.4f" % c_a, "%.4f" % ratio,
+                         "%+.2f %%" % (100 * (c_a / ratio - 1)),
+                         "%+.2f %%" % (100 * (r["contact_width"] / (2 * a) - 1)),
+                         "%+.2f %%" % (100 * (r["max_shear"] / peak - 1)),
+                         "%d" % r["iterations"]])
+    data = runs["0.4999"]
+    last = data[-1]
+    force = abs(last["contact_force_y"])
+    shear = abs(last["contact_force_x"])
+    a = 2 * math.sqrt(force * radius * (1 - 0.4999**2) / (math.pi * young))
+    profile = os.path.join(WORK, "cattaneo_mindlin",
+                           "contact_pressure-%02d.csv" % last["cycle"])
+    gnuplot("""
+set terminal pngcairo size 800,480 font ',11'
+set output '%s/cattaneo_mindlin-traction.png'
+set datafile separator ','
+set xlabel 'x [mm]'
+set ylabel 'traction [MPa]'
+set title 'Cattaneo-Mindlin, nu = 0.4999, cycle %d (%d dofs): shear q and mu p'
+set grid
+set key top left
+set xrange [-1.3*%.10g:1.3*%.10g]
+a = %.10g; mu = %.10g; p0 = 2 * %.10g / (pi * a)
+c = a * sqrt(1 - %.10g / (mu * %.10g))
+p(x) = abs(x) < a ? p0 * sqrt(1 - x**2 / a**2) : 0
+q(x) = abs(x) < c ? mu * (p(x) - p0 * (c / a) * sqrt(1 - x**2 / c**2)) : mu * p(x)
+set samples 2000
+plot mu * p(x) w l lw 2 lc rgb 'gray' t 'mu p, closed form', \
+     q(x) w l lw 2 lc rgb 'black' t 'q, Cattaneo', \
+     '%s' every ::1 u 1:($6 == 2 ? abs($11) : 1/0) w p pt 7 ps 0.6 lc 1 t 'q, sticking nodes', \
+     '%s' every ::1 u 1:($6 == 3 ? abs($11) : 1/0) w p pt 5 ps 0.6 lc 2 t 'q, slipping nodes'
+""" % (DOC_OUT, last["cycle"], last["dofs"], a, a, a, mu, force, shear,
+       force, profile, profile))
+    return table(["nu", "cycle", "dofs", "P [N/mm]", "c/a", "Cattaneo",
+                  "c/a error", "a error", "peak shear error", "iterations"],
+                 rows)
+
+
 def study_mesh(triangles, nx, ny):
     mesh = os.path.join(WORK, "beam-%d.msh" % triangles)
     if not os.path.exists(mesh):
@@ -272,7 +338,8 @@ def main():
     os.makedirs(WORK, exist_ok=True)
     if "--overkill" in sys.argv[1:]:
         overkill()
-    sections = {"hertz": hertz(), "energy": energy()}
+    sections = {"hertz": hertz(), "energy": energy(),
+                "cattaneo_mindlin": cattaneo_mindlin()}
     sections.update(study_tables())
     replace_sections(common.output_file("doc/validation.md"), sections)
     print("scripts/validation: %s/validation.md and the charts regenerated" %
