@@ -4,6 +4,7 @@
 #include <signorini/input/input_error.h>
 #include <signorini/postprocessing/boundary_penetration.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -15,13 +16,14 @@ namespace signorini
 
   template <int dim>
   void
-  check_boundary_penetration(const Discretisation<dim>          &discretisation,
-                             const ObstacleSet<dim>             &obstacles,
-                             const std::set<types::boundary_id> &contact_ids,
+  check_boundary_penetration(const Discretisation<dim> &discretisation,
+                             const ContactSurface<dim> &surface,
                              const TrilinosWrappers::MPI::Vector &solution,
                              const unsigned int                   cycle)
   {
-    const auto u = discretisation.relevant_copy(solution);
+    const auto &obstacles   = surface.obstacles();
+    const auto &contact_ids = surface.contact_ids();
+    const auto  u           = discretisation.relevant_copy(solution);
     // The vertices of contact faces: obstacles may press on them.
     std::set<unsigned int> on_contact_faces;
     for (const auto &cell :
@@ -32,9 +34,16 @@ namespace signorini
             for (const unsigned int v : face->vertex_indices())
               on_contact_faces.insert(face->vertex_index(v));
 
-    const double tolerance = 1e-6 * discretisation.body_size();
-    double       deepest   = tolerance;
-    std::string  where;
+    // As deep as the contact nodes penetrate (the penalty's O(eps)).
+    double allowed = 0.;
+    for (const auto &node : surface.nodes())
+      if (node.owned)
+        allowed = std::max(allowed, -surface.deformed_gap(node, solution));
+    const double tolerance =
+      1e-6 * discretisation.body_size() +
+      Utilities::MPI::max(allowed, discretisation.mpi_communicator());
+    double      deepest = tolerance;
+    std::string where;
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -83,14 +92,12 @@ namespace signorini
 
   template void
   check_boundary_penetration(const Discretisation<2> &,
-                             const ObstacleSet<2> &,
-                             const std::set<types::boundary_id> &,
+                             const ContactSurface<2> &,
                              const TrilinosWrappers::MPI::Vector &,
                              const unsigned int);
   template void
   check_boundary_penetration(const Discretisation<3> &,
-                             const ObstacleSet<3> &,
-                             const std::set<types::boundary_id> &,
+                             const ContactSurface<3> &,
                              const TrilinosWrappers::MPI::Vector &,
                              const unsigned int);
 } // namespace signorini

@@ -201,8 +201,7 @@ namespace signorini
         // through where it may not touch stops the run after them.
         if (parameters.contact.acts())
           check_boundary_penetration(discretisation,
-                                     *obstacle,
-                                     parameters.obstacle.contact_ids,
+                                     contact_surface,
                                      solution,
                                      cycle);
         if (parameters.output.timing_table)
@@ -295,8 +294,7 @@ namespace signorini
         output_step(cycle, step);
         if (parameters.contact.acts())
           check_boundary_penetration(discretisation,
-                                     *obstacle,
-                                     parameters.obstacle.contact_ids,
+                                     contact_surface,
                                      solution,
                                      cycle);
       }
