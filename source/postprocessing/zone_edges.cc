@@ -84,9 +84,9 @@ namespace signorini
             for (unsigned int v = 0; v < 2; ++v)
               owned_faces.push_back(cell->face(f)->vertex_dof_index(v, 0));
 
-    std::vector<Sample<dim>>                                      samples;
+    std::vector<Sample<dim>> samples;
     std::map<std::pair<types::global_dof_index, unsigned int>, unsigned int>
-      sample_at;
+                       sample_at;
     const unsigned int width = dim + 5;
     for (const auto &part : Utilities::MPI::all_gather(comm, owned_nodes))
       for (std::size_t i = 0; i + width <= part.size(); i += width)
@@ -107,8 +107,8 @@ namespace signorini
       for (std::size_t i = 0; i + 2 <= part.size(); i += 2)
         for (unsigned int k = 0; k < n_obstacles; ++k)
           {
-            const auto a =
-              sample_at.find({static_cast<types::global_dof_index>(part[i]), k});
+            const auto a = sample_at.find(
+              {static_cast<types::global_dof_index>(part[i]), k});
             const auto b = sample_at.find(
               {static_cast<types::global_dof_index>(part[i + 1]), k});
             if (a == sample_at.end() || b == sample_at.end())
@@ -154,7 +154,7 @@ namespace signorini
       if (samples[i].state != NodeState::open)
         for (const unsigned int n : samples[i].neighbours)
           {
-            auto &zone = edges[samples[i].obstacle];
+            auto           &zone = edges[samples[i].obstacle];
             const NodeState next = samples[n].state;
             if (next == NodeState::open)
               zone.contact.push_back(contact_edge(i, n));

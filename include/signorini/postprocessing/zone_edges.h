@@ -49,8 +49,8 @@ namespace signorini
    */
   template <int dim>
   std::vector<ZoneEdges<dim>>
-  estimate_zone_edges(const Discretisation<dim>                   &discretisation,
-                      const ContactSurface<dim>                   &surface,
+  estimate_zone_edges(const Discretisation<dim> &discretisation,
+                      const ContactSurface<dim> &surface,
                       const dealii::TrilinosWrappers::MPI::Vector &pressure,
                       const dealii::TrilinosWrappers::MPI::Vector &solution);
 } // namespace signorini
