@@ -366,6 +366,7 @@ namespace signorini
       {
         solution = carried[0];
         pressure = carried[1];
+        newton.carry_over();
       }
   }
 

@@ -60,6 +60,12 @@ namespace signorini
     void
     reinit();
 
+    /** The displacement and the pressure were carried over from the previous
+     * mesh: the next initialize_active_set() starts the stick and slip
+     * zones from the shear tractions of that displacement. */
+    void
+    carry_over();
+
     /** Starts a cycle: no iterations yet. */
     void
     start_cycle();
@@ -172,6 +178,8 @@ namespace signorini
     VectorType                 contact_residual;
     /** See tangential_traction(); ghosted. */
     VectorType tangential_pressure;
+    /** See carry_over(). */
+    bool carried_over = false;
     /** Each node's tractions of the last state update (for the law's
      * equations). */
     std::vector<NodeTraction<dim>> tractions;
