@@ -45,6 +45,10 @@ CASES = [
      {"Contact": {"Method": "augmented lagrangian"}}),
     ("clamped_beam_on_plane", "prm/clamped_beam_on_plane.prm", {}),
     ("hertz_cylinder", "prm/hertz_cylinder.prm", {}),
+    # The same scene with Coulomb friction: its cycles against the
+    # frictionless ones above (the cost of a frictional load step).
+    ("hertz_cylinder_friction", "prm/hertz_cylinder.prm",
+     {"Obstacle": {"Friction coefficient": "0.3"}}),
 ]
 
 
@@ -438,8 +442,10 @@ def two_d(repeat):
               "linear solve [s]", "ratio", "peak memory [MB]"]
     finals = []
     detail = ""
+    measured = {}
     for name, scene, overrides in CASES[:1] if common.SMOKE else CASES:
         rows = measure(name, scene, overrides, repeat)
+        measured[name] = rows
         text = common.table(header, [
             ["%d" % r["cycle"], "{:,}".format(int(r["dofs"])),
              "%d" % r["iterations"], "%.3f" % r["contact_solve"],
@@ -450,6 +456,8 @@ def two_d(repeat):
             detail = text
         last = rows[-1]
         method = overrides.get("Contact", {}).get("Method", "active set")
+        if "Obstacle" in overrides:
+            method += ", friction"
         finals.append(["`%s`" % os.path.basename(scene), method,
                        "{:,}".format(int(last["dofs"])),
                        "%d" % last["iterations"], "%.2f" % last["ratio"],
@@ -457,9 +465,32 @@ def two_d(repeat):
     summary = common.table(["scene", "method", "final dofs", "iterations",
                             "ratio", "peak memory [MB]"], finals)
     print("Final cycles\n\n" + summary)
-    return ("The default scene, medians of %d runs:\n\n%s\n"
+    text = ("The default scene, medians of %d runs:\n\n%s\n"
             "The final cycle of each benchmark:\n\n%s" %
             (repeat, detail, summary))
+    if "hertz_cylinder" in measured and "hertz_cylinder_friction" in measured:
+        friction = friction_table(measured["hertz_cylinder"],
+                                  measured["hertz_cylinder_friction"])
+        print("Friction\n\n" + friction)
+        text += ("\nA frictional load step against a frictionless one: the "
+                 "2D Hertz scene with Coulomb friction (mu = 0.3) and without, "
+                 "per cycle each one's contact solve over one linear solve on "
+                 "its mesh, and their quotient:\n\n" + friction)
+    return text
+
+
+def friction_table(frictionless, frictional):
+    """The Hertz scene's cycles with and without friction side by side."""
+    rows = []
+    for plain, friction in zip(frictionless, frictional):
+        rows.append(["%d" % plain["cycle"],
+                     "{:,}".format(int(friction["dofs"])),
+                     "%d" % plain["iterations"], "%d" % friction["iterations"],
+                     "%.2f" % plain["ratio"], "%.2f" % friction["ratio"],
+                     "%.2f" % (friction["ratio"] / plain["ratio"])])
+    return common.table(["cycle", "dofs (friction)", "iterations",
+                         "iterations (friction)", "ratio",
+                         "ratio (friction)", "friction / frictionless"], rows)
 
 
 if __name__ == "__main__":
