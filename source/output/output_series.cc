@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <utility>
 
@@ -151,6 +152,33 @@ namespace signorini
                                  directory + "': " + error.message());
       std::sort(removed.begin(), removed.end());
       return removed;
+    }
+
+    std::vector<std::string>
+    foreign_files(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      if (!fs::is_directory(directory, error))
+        return {};
+      // A run writes its parameters first, as ParameterHandler prints them.
+      std::ifstream in(directory + "/parameters.prm");
+      std::string   first_line;
+      if (in && std::getline(in, first_line) &&
+          first_line.rfind("set Dimension", 0) == 0)
+        return {};
+      std::vector<std::string> found;
+      for (const auto &entry : fs::directory_iterator(directory, error))
+        {
+          // (A folder in the way is not overwritten: the write fails.)
+          const std::string name = entry.path().filename().string();
+          if (entry.is_regular_file(error) &&
+              (classify(name).owned || name == "parameters.prm" ||
+               name == "obstacle.vtu"))
+            found.push_back(name);
+        }
+      std::sort(found.begin(), found.end());
+      return found;
     }
   } // namespace output_series
 } // namespace signorini

@@ -55,6 +55,27 @@ namespace signorini
   ContactProblem<dim>::start_output(const bool resume)
   {
     const std::string &directory = parameters.output.directory;
+    // A directory that no run wrote to keeps its files: a user's own
+    // statistics.csv or solution-01.vtu would be overwritten or removed.
+    std::vector<std::string> foreign;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      foreign = output_series::foreign_files(directory);
+    foreign = Utilities::MPI::broadcast(mpi_communicator, foreign, 0);
+    if (!foreign.empty())
+      {
+        std::string names;
+        for (std::size_t i = 0; i < foreign.size() && i < 3; ++i)
+          names += (i > 0 ? ", " : "") + foreign[i];
+        if (foreign.size() > 3)
+          names += " and " + std::to_string(foreign.size() - 3) + " more";
+        throw InputError("Output/Directory",
+                         "'" + directory +
+                           "' holds files a run would "
+                           "overwrite or remove (" +
+                           names +
+                           ") and no parameters.prm of an earlier run: "
+                           "choose another directory, or move them away");
+      }
     // The run owns the directory (and tidy_output() may remove what it
     // left unfinished) once the checkpoint to resume from is found: a
     // refused resume leaves the directory as it was.

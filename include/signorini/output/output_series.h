@@ -57,6 +57,16 @@ namespace signorini
     remove_stale_files(const std::string                 &directory,
                        const std::optional<unsigned int> &resumed_cycle,
                        const std::optional<unsigned int> &history_cycle = {});
+
+    /**
+     * The regular files of @p directory that a run would remove or overwrite
+     * (its series, parameters.prm, obstacle.vtu) if no signorini run wrote
+     * them: if the directory holds no parameters.prm of a run (whose first line
+     * sets the Dimension). Empty for a missing directory, one of a run, or
+     * one with none of those files.
+     */
+    std::vector<std::string>
+    foreign_files(const std::string &directory);
   } // namespace output_series
 } // namespace signorini
 
