@@ -62,7 +62,7 @@ namespace signorini
     // The obstacle moved by d: the point seen from where it was.
     if (displacements[k] == Tensor<1, dim>())
       return obstacles[k]->gap(point, normal);
-    return obstacles[k]->gap(point - displacements[k], normal);
+    return obstacles[k]->moved_gap(point, displacements[k], normal);
   }
 
   template <int dim>

@@ -10,6 +10,13 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** How far clear of the punch a point beyond its rim stays, in radii
+     * (see moved_gap()): no small displacement closes it. */
+    constexpr double far = 1e3;
+  } // namespace
+
   template <int dim>
   PunchObstacle<dim>::PunchObstacle(const Point<dim>     &center,
                                     const Tensor<1, dim> &normal,
@@ -45,6 +52,24 @@ namespace signorini
     const double         distance = from_rim.norm();
     normal                        = from_rim / distance;
     return distance;
+  }
+
+  template <int dim>
+  double
+  PunchObstacle<dim>::moved_gap(const Point<dim>     &point,
+                                const Tensor<1, dim> &displacement,
+                                Tensor<1, dim>       &normal) const
+  {
+    const Point<dim>     moved_back = point - displacement;
+    const Tensor<1, dim> r          = point - center;
+    const Tensor<1, dim> offset     = r - (r * unit_normal) * unit_normal;
+    // Beyond the rim, in front of the end as it was: clear of the punch.
+    if (offset.norm() > radius && r * unit_normal >= 0)
+      {
+        normal = unit_normal;
+        return (moved_back - center) * unit_normal + far * radius;
+      }
+    return gap(moved_back, normal);
   }
 
   template <int dim>

@@ -67,6 +67,18 @@ namespace signorini
     gap(const dealii::Point<dim> &point,
         dealii::Tensor<1, dim>   &normal) const = 0;
 
+    /** The gap of @p point to the obstacle moved by @p displacement, and
+     * its normal there: the gap of the point moved back, unless the
+     * obstacle's small-strain contact depends on where the point lies
+     * against the obstacle before it moved (PunchObstacle). */
+    virtual double
+    moved_gap(const dealii::Point<dim>     &point,
+              const dealii::Tensor<1, dim> &displacement,
+              dealii::Tensor<1, dim>       &normal) const
+    {
+      return gap(point - displacement, normal);
+    }
+
     /** The parameter entry that describes the obstacle, for messages
      * ("Obstacle 2/Center"). */
     virtual std::string
