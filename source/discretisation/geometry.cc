@@ -6,6 +6,7 @@
 #include <signorini/base/memory.h>
 #include <signorini/base/text.h>
 #include <signorini/discretisation/geometry.h>
+#include <signorini/discretisation/gmsh_geometry.h>
 #include <signorini/input/entry_text.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/text_check.h>
@@ -472,7 +473,16 @@ namespace signorini
         case Type::gmsh:
           {
             if (from_geometry_file())
-              mesh_geometry_file(mesh_file, gmsh_options(), coarse_mesh, comm);
+              {
+                mesh_geometry_file(mesh_file,
+                                   gmsh_options(),
+                                   coarse_mesh,
+                                   comm);
+                // Quadrilaterals and hexahedra are refined, not remeshed:
+                // their new boundary vertices follow the .geo's curves.
+                if (coarse_mesh.all_reference_cells_are_hyper_cube())
+                  attach_gmsh_geometry(coarse_mesh, mesh_file, comm);
+              }
             else
               {
                 std::ifstream     file(mesh_file, std::ios::binary);
