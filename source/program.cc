@@ -180,7 +180,38 @@ namespace signorini
       declare_parameters(prm, dim);
       input.parse(prm);
       Parameters<dim> parameters;
-      parameters.parse_parameters(prm, input.folders());
+      try
+        {
+          parameters.parse_parameters(prm, input.folders());
+        }
+      catch (const InputError &error)
+        {
+          // An entry that an included file set: say where, and how the
+          // including file sets it back (to change a Type, say).
+          const auto where = error.entry.empty() ?
+                               std::nullopt :
+                               input.included_setting(error.entry);
+          if (!where || !error.location.empty())
+            throw;
+          std::string reset;
+          try
+            {
+              ParameterHandler defaults;
+              declare_parameters(defaults, dim);
+              const auto path = parse::split(error.entry, '/');
+              for (std::size_t i = 0; i + 1 < path.size(); ++i)
+                defaults.enter_subsection(path[i]);
+              reset = "; after the include, `set " + path.back() + " = " +
+                      defaults.get(path.back()) + "` sets it back";
+            }
+          catch (...)
+            {
+              // Not an entry of its own (a combination of entries).
+            }
+          throw InputError(error.entry,
+                           std::string(error.what()) + " (set at " + *where +
+                             reset + ")");
+        }
       ConditionalOStream err(std::cerr,
                              Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                                0);

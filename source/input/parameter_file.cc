@@ -268,6 +268,44 @@ namespace signorini
     return folder_list;
   }
 
+  std::optional<std::string>
+  ParameterFile::included_setting(const std::string &entry) const
+  {
+    const auto trimmed = [](const std::string &text) {
+      const auto first = text.find_first_not_of(" \t");
+      if (first == std::string::npos)
+        return std::string();
+      return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+    };
+    std::vector<std::string>   sections;
+    std::optional<std::string> found;
+    for (const auto &line : lines)
+      {
+        const std::string text = trimmed(
+          line.text.substr(0, std::min(line.text.find('#'), line.text.size())));
+        const auto        space = text.find_first_of(" \t");
+        const std::string word  = text.substr(0, space);
+        const std::string rest =
+          space == std::string::npos ? "" : trimmed(text.substr(space));
+        if (word == "subsection")
+          sections.push_back(rest);
+        else if (word == "end" && !sections.empty())
+          sections.pop_back();
+        else if (word == "set" && rest.find('=') != std::string::npos)
+          {
+            std::string name;
+            for (const auto &section : sections)
+              name += section + "/";
+            name += trimmed(rest.substr(0, rest.find('=')));
+            if (name == entry)
+              found = line.file == path ?
+                        std::optional<std::string>() :
+                        line.file + ":" + std::to_string(line.number);
+          }
+      }
+    return found;
+  }
+
   namespace
   {
     /** Whether @p message starts with "Line <N> of file <": then @p n is N

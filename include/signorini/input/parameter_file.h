@@ -60,6 +60,12 @@ namespace signorini
     const std::vector<std::string> &
     folders() const;
 
+    /** "FILE:LINE" of the last line that sets @p entry ("Subsection/Name")
+     * if that line is in an included file (FILE as its `include` line
+     * names it); empty otherwise. */
+    std::optional<std::string>
+    included_setting(const std::string &entry) const;
+
   private:
     /** A line of the text: what ParameterHandler reads, the name of the
      * file it is from as ParameterHandler would name it, and its number
