@@ -143,22 +143,23 @@ namespace signorini
     double size = 0.;
     for (const auto &cell : coarse_mesh.active_cell_iterators())
       size = std::max(size, cell->diameter());
-    const double                   tolerance = 1e-8 * size;
+    const double                      tolerance = 1e-8 * size;
     std::map<int, types::manifold_id> manifold_of;
     for (const auto &cell : coarse_mesh.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         {
           if (!face->at_boundary())
             continue;
-          int    best = -1;
+          int    best          = -1;
           double best_distance = std::numeric_limits<double>::max();
           for (const auto &[tag, is_curved] : curved)
             {
               bool holds = true;
               for (const unsigned int v : face->vertex_indices())
-                if (model->template closest_point<dim>(dim - 1,
-                                                       tag,
-                                                       face->vertex(v))
+                if (model
+                      ->template closest_point<dim>(dim - 1,
+                                                    tag,
+                                                    face->vertex(v))
                       .distance(face->vertex(v)) > tolerance)
                   {
                     holds = false;
@@ -182,8 +183,7 @@ namespace signorini
             manifold_of.emplace(best, 1000 + manifold_of.size());
           if (inserted)
             coarse_mesh.set_manifold(
-              entry->second,
-              GmshEntityManifold<dim>(model, dim - 1, best));
+              entry->second, GmshEntityManifold<dim>(model, dim - 1, best));
           face->set_manifold_id(entry->second);
         }
   }
