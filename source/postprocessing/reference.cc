@@ -6,7 +6,6 @@
 #include <cmath>
 #include <map>
 #include <optional>
-#include <regex>
 
 namespace signorini
 {
@@ -27,8 +26,7 @@ namespace signorini
       return;
     function = parse_function<1>(text, 1, entry, constants, true);
     // A number that does not depend on t is checked now.
-    static const std::regex uses_time("(^|[^A-Za-z0-9_])t($|[^A-Za-z0-9_])");
-    time_dependent = std::regex_search(text, uses_time);
+    time_dependent = names_variable(text, "t");
     if (!time_dependent)
       at(0.);
   }
