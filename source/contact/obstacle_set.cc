@@ -59,9 +59,8 @@ namespace signorini
                         const Point<dim>  &point,
                         Tensor<1, dim>    &normal) const
   {
-    // The obstacle moved by d: the point seen from where it was.
-    if (displacements[k] == Tensor<1, dim>())
-      return obstacles[k]->gap(point, normal);
+    // The obstacle moved by d (zero too: a punch that does not move keeps
+    // a point beyond its rim clear of it, as a moved one does).
     return obstacles[k]->moved_gap(point, displacements[k], normal);
   }
 

@@ -18,7 +18,7 @@ namespace signorini
    * the rim to x; beside the punch (d < 0) the gap is |t| - R and the
    * normal t / |t| (its side wall).
    *
-   * Moved (moved_gap()), a point beyond the rim that lay in front of the
+   * Moved or not (moved_gap()), a point beyond the rim that lay in front of the
    * end before the punch moved stays clear of it: its gap is its height
    * over the moved end plus 1000 R, along n. The small-strain model moves
    * it along the axis, past the punch, as Boussinesq's solution does, whose
