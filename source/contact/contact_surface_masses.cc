@@ -76,9 +76,27 @@ namespace signorini
             }
     for (auto &m : mass)
       m.compress(VectorOperation::add);
+    // A vertex that faces one obstacle carries the whole boundary around it,
+    // whichever obstacle its quadrature points face most squarely (a floor
+    // and a plane crossing it at a small angle: the vertex nearest the
+    // floor had none of it, so no pressure, and the active set cycled). A
+    // corner's nodes share it by facing; one that faces none of it takes
+    // an equal share, so that its pressure has the sign of its force.
     for (auto &node : contact_nodes)
       if (node.owned)
-        node.mass = mass[node.obstacle](node.scalar_dof);
+        {
+          double total = 0.;
+          for (const auto &m : mass)
+            total += m(node.scalar_dof);
+          if (node.corner == numbers::invalid_unsigned_int)
+            node.mass = total;
+          else
+            {
+              node.mass = mass[node.obstacle](node.scalar_dof);
+              if (node.mass <= 0.)
+                node.mass = total / corner_nodes[node.corner].size();
+            }
+        }
   }
 
   template void

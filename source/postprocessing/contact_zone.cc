@@ -7,6 +7,7 @@
 #include <signorini/postprocessing/zone_edges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
@@ -175,7 +176,8 @@ namespace signorini
     // The nodal pressures sit at one dof per node, the others hold zero:
     // summed over all components, the shape functions interpolate them.
     // Each obstacle's pressure and active indicator are those of its own
-    // nodes.
+    // nodes: all around a vertex that faces one obstacle, and at a corner
+    // where the boundary faces each (as the nodes' masses are counted).
     std::unordered_map<types::global_dof_index, unsigned int> node_at;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       node_at[nodes[i].scalar_dof] = i;
@@ -195,16 +197,30 @@ namespace signorini
         (n_obstacles > 1 ? update_normal_vectors : update_default));
     const unsigned int                   n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<std::vector<double>> nodal(n_obstacles, std::vector<double>(n)),
-      indicator(n_obstacles, std::vector<double>(n));
-    std::vector<std::vector<Tensor<1, dim>>> nodal_force(
-      n_obstacles, std::vector<Tensor<1, dim>>(n));
+    // [corner part][obstacle][dof of the cell]
+    std::array<std::vector<std::vector<double>>, 2>         nodal, indicator;
+    std::array<std::vector<std::vector<Tensor<1, dim>>>, 2> nodal_force;
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        nodal[c].assign(n_obstacles, std::vector<double>(n));
+        indicator[c].assign(n_obstacles, std::vector<double>(n));
+        nodal_force[c].assign(n_obstacles, std::vector<Tensor<1, dim>>(n));
+      }
+    // The part gathered: the nodes of corners, or the others.
+    bool       corner_part = false;
+    const auto in_part     = [&](const unsigned int node) {
+      return (nodes[node].corner != numbers::invalid_unsigned_int) ==
+             corner_part;
+    };
+    // One obstacle, no corners: the pressure vector as it is.
+    const auto single = [&]() { return n_obstacles == 1 && !corner_part; };
     // Obstacle k's pressure (or active indicator) at dof i.
     const auto own_value = [&](const types::global_dof_index i,
                                const unsigned int            k,
                                const bool                    active) {
       const auto at = node_at.find(i);
-      if (at == node_at.end() || nodes[at->second].obstacle != k)
+      if (at == node_at.end() || nodes[at->second].obstacle != k ||
+          !in_part(at->second))
         return 0.;
       if (active)
         return nodes[at->second].in_contact() ? 1. : 0.;
@@ -214,12 +230,12 @@ namespace signorini
                                  const unsigned int            k,
                                  const bool                    active) {
       if (!constraints.is_constrained(i))
-        return n_obstacles == 1 && !active ? static_cast<double>(pressure(i)) :
-                                             own_value(i, k, active);
+        return single() && !active ? static_cast<double>(pressure(i)) :
+                                     own_value(i, k, active);
       double value = 0.;
       if (const auto *entries = constraints.get_constraint_entries(i))
         for (const auto &[master, weight] : *entries)
-          value += weight * (n_obstacles == 1 && !active ?
+          value += weight * (single() && !active ?
                                static_cast<double>(pressure(master)) :
                                own_value(master, k, active));
       return value;
@@ -230,15 +246,16 @@ namespace signorini
     const auto own_normal = [&](const types::global_dof_index i,
                                 const unsigned int            k) {
       const auto at = node_at.find(i);
-      if (at == node_at.end() || nodes[at->second].obstacle != k)
+      if (at == node_at.end() || nodes[at->second].obstacle != k ||
+          !in_part(at->second))
         return Tensor<1, dim>();
       return nodes[at->second].normal;
     };
     const auto nodal_force_density = [&](const types::global_dof_index i,
                                          const unsigned int            k) {
       const auto own_pressure = [&](const types::global_dof_index j) {
-        return n_obstacles == 1 ? static_cast<double>(pressure(j)) :
-                                  own_value(j, k, false);
+        return single() ? static_cast<double>(pressure(j)) :
+                          own_value(j, k, false);
       };
       if (!constraints.is_constrained(i))
         return own_pressure(i) * own_normal(i, k);
@@ -261,37 +278,47 @@ namespace signorini
             {
               fe_face_values.reinit(cell, f);
               cell->get_dof_indices(dof_indices);
-              for (unsigned int k = 0; k < n_obstacles; ++k)
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    nodal[k][i]       = nodal_value(dof_indices[i], k, false);
-                    indicator[k][i]   = nodal_value(dof_indices[i], k, true);
-                    nodal_force[k][i] = nodal_force_density(dof_indices[i], k);
-                  }
+              for (unsigned int c = 0; c < 2; ++c)
+                {
+                  corner_part = c == 1;
+                  for (unsigned int k = 0; k < n_obstacles; ++k)
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        nodal[c][k][i] = nodal_value(dof_indices[i], k, false);
+                        indicator[c][k][i] =
+                          nodal_value(dof_indices[i], k, true);
+                        nodal_force[c][k][i] =
+                          nodal_force_density(dof_indices[i], k);
+                      }
+                }
               for (const unsigned int q :
                    fe_face_values.quadrature_point_indices())
                 {
                   const auto  &x = fe_face_values.quadrature_point(q);
                   const double JxW =
                     fe_face_values.JxW(q) * discretisation.weight(x);
-                  // The point belongs to the obstacle it faces.
-                  const unsigned int k =
+                  // At a corner, the point belongs to the obstacle it faces.
+                  const unsigned int facing =
                     n_obstacles == 1 ?
                       0 :
                       obstacles.facing(x, fe_face_values.normal_vector(q));
-                  double         p_h = 0., active_h = 0.;
+                  double         p_h = 0.;
                   Tensor<1, dim> force_h;
-                  for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int k = 0; k < n_obstacles; ++k)
                     {
-                      p_h += nodal[k][i] * fe_face_values.shape_value(i, q);
-                      active_h +=
-                        indicator[k][i] * fe_face_values.shape_value(i, q);
-                      force_h +=
-                        nodal_force[k][i] * fe_face_values.shape_value(i, q);
+                      double active_h = 0.;
+                      for (unsigned int c = 0; c < (k == facing ? 2 : 1); ++c)
+                        for (unsigned int i = 0; i < n; ++i)
+                          {
+                            const double phi = fe_face_values.shape_value(i, q);
+                            p_h += nodal[c][k][i] * phi;
+                            active_h += indicator[c][k][i] * phi;
+                            force_h += nodal_force[c][k][i] * phi;
+                          }
+                      area[k] += active_h * JxW;
                     }
                   integral += p_h * JxW;
                   resultant += force_h * JxW;
-                  area[k] += active_h * JxW;
                   if (exact)
                     {
                       const double p = exact->value(x);
