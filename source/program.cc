@@ -4,6 +4,7 @@
 
 #include <signorini/base/failures.h>
 #include <signorini/base/interruption.h>
+#include <signorini/base/memory.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parameter_file.h>
 #include <signorini/input/text_check.h>
@@ -223,6 +224,7 @@ namespace signorini
       // The problem is destroyed before a failure propagates, so that its
       // timer does not finish while an exception is in flight.
       std::exception_ptr failure;
+      reserve_blas_workspace();
       {
         ContactProblem<dim> problem(parameters, MPI_COMM_WORLD);
         try
@@ -359,9 +361,12 @@ namespace signorini
       {
         err << error_line(one_line(error)) << std::endl;
       }
-    catch (const std::bad_alloc &)
+    catch (const std::bad_alloc &lack)
       {
-        err << error_line("out of memory before cycle 0") << std::endl;
+        const auto *known = dynamic_cast<const OutOfMemory *>(&lack);
+        err << error_line(std::string("out of memory before cycle 0") +
+                          (known ? std::string(": ") + known->what() : ""))
+            << std::endl;
       }
     catch (const std::exception &error)
       {

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <signorini/base/failures.h>
 #include <signorini/base/memory.h>
 
 #include <cstdlib> // defines __GLIBC__ where glibc is the C library
@@ -13,6 +14,19 @@
 #if defined(__GLIBC__)
 #  include <malloc.h>
 #endif
+
+extern "C" void
+dtrsm_(const char   *side,
+       const char   *uplo,
+       const char   *transa,
+       const char   *diag,
+       const int    *m,
+       const int    *n,
+       const double *alpha,
+       const double *a,
+       const int    *lda,
+       double       *b,
+       const int    *ldb);
 
 namespace signorini
 {
@@ -52,6 +66,26 @@ namespace signorini
       return std::numeric_limits<double>::infinity();
     }
   } // namespace
+
+  void
+  reserve_blas_workspace()
+  {
+    static bool reserved = false;
+    if (reserved)
+      return;
+    // The work space and a margin, given back before the BLAS takes it.
+    if (void *room = std::malloc(std::size_t(160) << 20))
+      std::free(room);
+    else
+      throw OutOfMemory("the dense kernels (BLAS) could not reserve their "
+                        "work space of 128 MB");
+    // A 1 x 1 triangular solve is a level-3 call: it takes the work space.
+    const int    one   = 1;
+    const double alpha = 1., a = 1.;
+    double       b = 1.;
+    dtrsm_("L", "L", "N", "N", &one, &one, &alpha, &a, &one, &b, &one);
+    reserved = true;
+  }
 
   double
   available_memory(const MPI_Comm comm)

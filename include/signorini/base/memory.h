@@ -40,6 +40,18 @@ namespace signorini
    */
   double
   available_memory(const MPI_Comm comm);
+
+  /**
+   * Has the BLAS take its work space now, while there is memory, instead
+   * of at the first dense kernel of a direct solve. OpenBLAS (Debian's
+   * libblas.so.3) reserves 128 MB on its first level-3 call and keeps it;
+   * where it cannot, it retries for ever, deaf to SIGTERM: under a limit
+   * of 600 to 800 MB (ulimit -v) the 2D Hertz scene hung in its first
+   * factorisation. Throws OutOfMemory, saying so, where 160 MB cannot be
+   * allocated first. Call once, before the problem is set up.
+   */
+  void
+  reserve_blas_workspace();
 } // namespace signorini
 
 #endif
