@@ -22,8 +22,10 @@
 #   OP:    near (|x-VALUE| <= TOLERANCE), rnear (relative), lt, le, gt, ge;
 #          or `decreasing` / `increasing` (no VALUE): every row below /
 #          above the one before
-#   VALUE: a number, or NUMBER*NAME: the number times the row's column NAME
-#          (e.g. -21.978*time, a force proportional to the load history's t)
+#   VALUE: a number, or [OFFSET+]NUMBER*NAME: the number times the row's
+#          column NAME (e.g. -21.978*time, a force proportional to the load
+#          history's t), plus OFFSET (0.002+2*penalty_parameter; a - before
+#          NUMBER subtracts)
 # Checks print PASS or FAIL, so the comparison (compare.py) turns a violated
 # bound into a failing test even where the bound is far tighter than the
 # comparison's own tolerance.
@@ -101,9 +103,19 @@ awk -F, -v checks="$checks" '
       if (w[1] == "") { for (i = 1; i < n; ++i) w[i] = w[i + 1]; --n }
       row = w[1]; name = w[2]; op = w[3]; v = w[4] + 0; tol = w[5] + 0
       # VALUE as NUMBER*NAME: times column NAME of each row.
-      by = ""
-      if (w[4] ~ /\*/) { by = substr(w[4], index(w[4], "*") + 1)
-                         v = substr(w[4], 1, index(w[4], "*") - 1) + 0 }
+      by = ""; offset = 0
+      if (w[4] ~ /\*/) {
+        by = substr(w[4], index(w[4], "*") + 1)
+        factor = substr(w[4], 1, index(w[4], "*") - 1)
+        # OFFSET+NUMBER: split at the last sign that follows a digit or a
+        # point (not that of an exponent).
+        split_at = 0
+        for (i = 2; i <= length(factor); ++i)
+          if (substr(factor, i, 1) ~ /[-+]/ && substr(factor, i - 1, 1) ~ /[0-9.]/)
+            split_at = i
+        if (split_at) { offset = substr(factor, 1, split_at - 1) + 0
+                        factor = substr(factor, split_at) }
+        v = factor + 0 }
       verdict = "PASS"
       if (!(name in col)) verdict = "FAIL (no column " name ")"
       else if (by != "" && !(by in col)) verdict = "FAIL (no column " by ")"
@@ -134,7 +146,7 @@ awk -F, -v checks="$checks" '
         last  = (row == "all") ? rows : first
         if (first < 1 || last > rows) verdict = "FAIL (no row " row ")"
         for (r = first; r <= last && verdict == "PASS"; ++r) {
-          target = (by == "") ? v : v * value[r, col[by]]
+          target = (by == "") ? v : offset + v * value[r, col[by]]
           if (!ok(value[r, col[name]] + 0, op, target, tol)) verdict = "FAIL (" value[r, col[name]] ")"
         }
       }

@@ -174,6 +174,59 @@ namespace signorini
           }
         return true;
       }
+
+      /** The obstacle's tangential forces of @p node, which its force
+       * @p equations E f + G u = v bind to its normal spring's force
+       * f_n = k (v_n - n.u) (of the @p normal condition n.u = v_n and the
+       * spring's @p stiffness k): f_T = A^-1 (v - G u - (E n) f_n) along
+       * its free tangents t_j, A_ij = e_i.t_j; a block on its dofs. */
+      template <int dim>
+      void
+      add_spring_equations(const ContactNode<dim>               &node,
+                           const NodeCondition<dim>             &normal,
+                           const std::vector<NodeEquation<dim>> &equations,
+                           const double                          stiffness,
+                           SystemAdditions<dim>                 &additions)
+      {
+        std::vector<Tensor<1, dim>> tangents;
+        for (const auto &t : node.tangents)
+          if (ContactSurface<dim>::free_part(t, node.free) >=
+              ContactSurface<dim>::fixed_along_normal)
+            tangents.push_back(t);
+        const unsigned int k = tangents.size();
+        if (k == 0 || equations.size() != k)
+          return;
+        FullMatrix<double> a(k, k);
+        for (unsigned int i = 0; i < k; ++i)
+          for (unsigned int j = 0; j < k; ++j)
+            a(i, j) = equations[i].direction * tangents[j];
+        if (std::abs(a.determinant()) < 1e-8)
+          return;
+        a.gauss_jordan();
+        const Tensor<1, dim>                &n = normal.direction;
+        typename SystemAdditions<dim>::Block block;
+        block.rows    = node.dofs;
+        block.columns = node.dofs;
+        for (unsigned int j = 0; j < k; ++j)
+          {
+            Tensor<1, dim> w;
+            double         r = 0.;
+            for (unsigned int i = 0; i < k; ++i)
+              {
+                const double en = equations[i].direction * n;
+                w += a(j, i) * (equations[i].displacement - stiffness * en * n);
+                r += a(j, i) *
+                     (equations[i].value - stiffness * en * normal.value);
+              }
+            for (unsigned int p = 0; p < dim; ++p)
+              {
+                for (unsigned int q = 0; q < dim; ++q)
+                  block.matrix[p][q] += tangents[j][p] * w[q];
+                block.rhs[p] += tangents[j][p] * r;
+              }
+          }
+        additions.blocks.push_back(block);
+      }
     } // namespace
 
     template <int dim>
@@ -272,8 +325,15 @@ namespace signorini
           {
             const auto &node = nodes[i];
             conditions.clear();
+            equations.clear();
             law.conditions(node, tractions[i], conditions, equations);
             const double stiffness = node.mass / epsilon;
+            if (!equations.empty() && !conditions.empty())
+              {
+                add_spring_equations(
+                  node, conditions.front(), equations, stiffness, additions);
+                additions.symmetric = false;
+              }
             for (unsigned int c = 0; c < conditions.size(); ++c)
               {
                 const auto  &d = conditions[c].direction;
@@ -298,6 +358,9 @@ namespace signorini
           }
       additions.has_blocks = true;
       additions.has_forces = !multipliers.empty();
+      // Slipping nodes' forces are not symmetric in their displacements.
+      additions.symmetric = !Utilities::MPI::logical_or(!additions.symmetric,
+                                                        surface.communicator());
     }
 
     template void

@@ -116,6 +116,8 @@ namespace signorini
           if (conditions.size() < free && !held_by_supports(node, t))
             conditions.push_back({t, t * node.reference, along});
       }
+    else if (node.state == NodeState::slip && traction.shear_weight == 0.)
+      add_regularised_slip_equations(node, traction, equations);
     else if (node.state == NodeState::slip && dim == 3 &&
              traction.shear.norm() >= 0.99 * bound(node, traction.sigma))
       add_slip_equations(node, traction, equations);
@@ -134,6 +136,45 @@ namespace signorini
                 equations.push_back({t - mu * (t * d) * node.normal, 0.});
             }
       }
+  }
+
+  template <int dim>
+  void
+  FrictionLaw<dim>::add_regularised_slip_equations(
+    const ContactNode<dim>         &node,
+    const NodeTraction<dim>        &traction,
+    std::vector<NodeEquation<dim>> &equations) const
+  {
+    // The obstacle's tangential force f_T = B z, along z = zeta / |zeta|
+    // with zeta = -c s, of the size B = mu n.f (Coulomb) or m s (Tresca).
+    // Linearised about the present slip, z turns by -P c ds / |zeta|
+    // (P = I - z z^T, none in 2D, where z is a sign), and P s = 0:
+    //   t_i.f - mu z_i n.f + (B c / |zeta|) sum_j P_ij t_j.(u - u_ref) = 0
+    // (Tresca: without the n.f term, = m s z_i), B at the present state.
+    const double zeta = traction.tangential.norm();
+    if (!(zeta > 0))
+      return;
+    const Tensor<1, dim> z      = traction.tangential / zeta;
+    const double         mu     = coefficient[node.obstacle];
+    const bool           tresca = slip_bound[node.obstacle] > 0;
+    const double         size   = node.mass * bound(node, traction.sigma);
+    const double         turn   = size * traction.stiffness / zeta;
+    for (const auto &t : node.tangents)
+      if (!held_by_supports(node, t))
+        {
+          NodeEquation<dim> equation;
+          equation.direction = t;
+          if (!tresca)
+            equation.direction -= mu * (t * z) * node.normal;
+          // In 2D z is a sign: nothing turns.
+          for (const auto &t_j : node.tangents)
+            if (dim == 3)
+              equation.displacement +=
+                turn * ((&t_j == &t ? 1. : 0.) - (t * z) * (t_j * z)) * t_j;
+          equation.value = (tresca ? size * (t * z) : 0.) +
+                           equation.displacement * node.reference;
+          equations.push_back(equation);
+        }
   }
 
   template <int dim>

@@ -40,7 +40,7 @@ namespace signorini
           "obstacle (no unit): a node in contact sticks while its shear "
           "traction is below mu x its contact pressure and slips, against "
           "its slip, at that traction. 0: frictionless. Needs Contact/Method "
-          "= active set; slip is counted over each load step (Load "
+          "= active set (exact) or penalty (a regularised stick); slip is counted over each load step (Load "
           "history).");
         prm.declare_entry(
           "Tresca slip bound",
@@ -114,7 +114,7 @@ namespace signorini
       throw InputError("Contact/Method",
                        "friction (an obstacle's Friction coefficient or "
                        "Tresca slip bound) is solved by the active set "
-                       "only, not by '" +
+                       "and the penalty method only, not by '" +
                          method + "'");
     if (matrix_free)
       throw InputError("Linear solver/Type",

@@ -127,9 +127,10 @@ namespace signorini
         Tensor<1, dim> q;
         for (unsigned int d = 0; d < dim; ++d)
           q[d] = tangential_pressure(node.dofs[d]);
-        traction.shear     = q;
-        traction.slip      = node.slip(solution);
-        traction.stiffness = formulation.tangential_stiffness(i);
+        traction.shear        = q;
+        traction.slip         = node.slip(solution);
+        traction.stiffness    = formulation.tangential_stiffness(i);
+        traction.shear_weight = formulation.shear_weight();
         traction.tangential =
           formulation.tangential_traction(i, node, traction.slip, q);
       }

@@ -120,6 +120,31 @@ namespace signorini
   }
 
   template <int dim>
+  Tensor<1, dim>
+  PenaltyFormulation<dim>::tangential_traction(const unsigned int i,
+                                               const ContactNode<dim> &,
+                                               const Tensor<1, dim> &slip,
+                                               const Tensor<1, dim> &) const
+  {
+    // The tangential springs' traction: a regularised stick.
+    return -tangential_stiffness(i) * slip;
+  }
+
+  template <int dim>
+  double
+  PenaltyFormulation<dim>::tangential_stiffness(const unsigned int) const
+  {
+    return 1. / epsilon;
+  }
+
+  template <int dim>
+  double
+  PenaltyFormulation<dim>::shear_weight() const
+  {
+    return 0.;
+  }
+
+  template <int dim>
   void
   PenaltyFormulation<dim>::linearise(
     const ContactSurface<dim>            &surface,
@@ -130,6 +155,10 @@ namespace signorini
     condition_enforcement::add_springs(
       surface, law, tractions, epsilon, {}, additions);
     additions.key = {surface.active_set_signature(), epsilon};
+    // A slipping node's springs change with its slip direction, which the
+    // signature does not hold: such a system is never reused.
+    if (!additions.symmetric)
+      additions.key.first.second += ++linearisations;
   }
 
   template <int dim>

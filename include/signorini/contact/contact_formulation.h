@@ -70,7 +70,7 @@ namespace signorini
      * its slip @p slip [mm] of the load step and the obstacle's tangential
      * traction @p traction [MPa] on it (vectors in its tangent plane), from
      * which a law with friction decides its state and its tangential
-     * force. Only formulations that supports_friction() are asked. */
+     * force. */
     virtual dealii::Tensor<1, dim>
     tangential_traction(const unsigned int            i,
                         const ContactNode<dim>       &node,
@@ -90,6 +90,14 @@ namespace signorini
     {
       (void)i;
       return 0.;
+    }
+
+    /** The derivative of tangential_traction() by the obstacle's traction
+     * q: 1 where zeta = q - c s, 0 where zeta = -c s (a penalty). */
+    virtual double
+    shear_weight() const
+    {
+      return 1.;
     }
 
     /** Adds the @p law's conditions and equations of the nodes of

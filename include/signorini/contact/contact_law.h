@@ -57,7 +57,9 @@ namespace signorini
    * [MPa] in the node's tangent plane (the active set's q - c s: the
    * obstacle's tangential traction q on the body and the slip s of the
    * load step), with the contact pressure p, q, s and the formulation's
-   * dzeta/ds = -c [MPa/mm] for a law that linearises zeta.
+   * dzeta/ds = -c [MPa/mm] for a law that linearises zeta, and dzeta/dq
+   * (1 for the active set; 0 for the penalty's zeta = -s / epsilon, a
+   * regularised stick).
    */
   template <int dim>
   struct NodeTraction
@@ -67,7 +69,8 @@ namespace signorini
     dealii::Tensor<1, dim> tangential;
     dealii::Tensor<1, dim> shear;
     dealii::Tensor<1, dim> slip;
-    double                 stiffness = 0.;
+    double                 stiffness    = 0.;
+    double                 shear_weight = 1.;
   };
 
   /**

@@ -64,6 +64,15 @@ namespace signorini
     frictional(const ContactNode<dim> &node) const override;
 
   private:
+    /** Appends the Newton equations of a slipping @p node whose augmented
+     * tangential traction depends on its slip alone (a penalty's zeta =
+     * -c s), its slip direction linearised in 3D, to @p equations. */
+    void
+    add_regularised_slip_equations(
+      const ContactNode<dim>         &node,
+      const NodeTraction<dim>        &traction,
+      std::vector<NodeEquation<dim>> &equations) const;
+
     /** Appends the semismooth Newton equations of a slipping @p node in
      * 3D (its slip direction linearised) to @p equations. */
     void

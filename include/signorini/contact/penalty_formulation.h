@@ -19,7 +19,12 @@ namespace signorini
    * epsilon, the obstacle a Winkler layer of compliance epsilon [mm/MPa];
    * the penetration is epsilon times the local pressure. The law's
    * conditions on the nodes in contact (penetrating ones) become springs of
-   * stiffness m / epsilon (condition_enforcement::add_springs). Remedies:
+   * stiffness m / epsilon (condition_enforcement::add_springs). With
+   * friction the stick is regularised as well: a sticking node is held to
+   * its place at the step's start by tangential springs of the same
+   * stiffness, its shear traction -s / epsilon for its slip s, and it
+   * slips where that exceeds the friction bound (mu times its penalty
+   * pressure, or Tresca's s). Remedies:
    * cycle breaking (every negative gap counts as penetrating), then penalty
    * continuation from a 1000 times softer penalty.
    */
@@ -48,6 +53,18 @@ namespace signorini
                       const ContactNode<dim> &node,
                       const double            gap,
                       const double            pressure) const override;
+
+    dealii::Tensor<1, dim>
+    tangential_traction(const unsigned int            i,
+                        const ContactNode<dim>       &node,
+                        const dealii::Tensor<1, dim> &slip,
+                        const dealii::Tensor<1, dim> &traction) const override;
+
+    double
+    tangential_stiffness(const unsigned int i) const override;
+
+    double
+    shear_weight() const override;
 
     void
     linearise(const ContactSurface<dim>            &surface,
@@ -81,6 +98,8 @@ namespace signorini
     double touching_tolerance = 0.;
     /** Cycle breaking: every negative gap is penetrating. */
     bool sign_rule = false;
+    /** Systems with slipping nodes so far (each is built anew). */
+    mutable std::size_t linearisations = 0;
   };
 } // namespace signorini
 
