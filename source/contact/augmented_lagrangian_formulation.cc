@@ -14,6 +14,21 @@ namespace signorini
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** The obstacle's shear traction [MPa] on @p node of @p newton's
+     * state. */
+    template <int dim>
+    Tensor<1, dim>
+    shear(const NewtonDriver<dim> &newton, const ContactNode<dim> &node)
+    {
+      Tensor<1, dim> q;
+      for (unsigned int d = 0; d < dim; ++d)
+        q[d] = newton.tangential_traction()(node.dofs[d]);
+      return q;
+    }
+  } // namespace
+
   template <int dim>
   AugmentedLagrangianFormulation<dim>::AugmentedLagrangianFormulation(
     const ContactParameters &parameters,
@@ -51,6 +66,16 @@ namespace signorini
         multipliers[i] =
           std::max(0.,
                    static_cast<double>(newton.pressure()(nodes[i].scalar_dof)));
+    // With friction, the shear tractions from the last load step's (zero
+    // on a new mesh).
+    tangential_multipliers.clear();
+    if (newton.tangential_traction().size() > 0)
+      {
+        tangential_multipliers.assign(nodes.size(), Tensor<1, dim>());
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          if (nodes[i].owned)
+            tangential_multipliers[i] = shear(newton, nodes[i]);
+      }
     newton.initialize_active_set();
     double previous_change = 0.;
     for (;;)
@@ -90,6 +115,7 @@ namespace signorini
       }
   }
 
+
   template <int dim>
   double
   AugmentedLagrangianFormulation<dim>::update_multipliers(
@@ -108,6 +134,12 @@ namespace signorini
           change         = std::max(change, std::abs(p - multipliers[i]));
           largest        = std::max(largest, p);
           multipliers[i] = p;
+          if (!tangential_multipliers.empty())
+            {
+              const auto q = shear(newton, nodes[i]);
+              change = std::max(change, (q - tangential_multipliers[i]).norm());
+              tangential_multipliers[i] = q;
+            }
         }
     change  = Utilities::MPI::max(change, newton.mpi_communicator());
     largest = Utilities::MPI::max(largest, newton.mpi_communicator());
@@ -145,9 +177,47 @@ namespace signorini
     const std::vector<NodeTraction<dim>> &tractions,
     SystemAdditions<dim>                 &additions) const
   {
-    condition_enforcement::add_springs(
-      surface, law, tractions, epsilon, multipliers, additions);
+    condition_enforcement::add_springs(surface,
+                                       law,
+                                       tractions,
+                                       epsilon,
+                                       multipliers,
+                                       tangential_multipliers,
+                                       additions);
     additions.key = {surface.active_set_signature(), epsilon};
+    // A slipping node's springs change with its slip direction, which the
+    // signature does not hold: such a system is never reused.
+    if (!additions.symmetric)
+      additions.key.first.second += ++linearisations;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  AugmentedLagrangianFormulation<dim>::tangential_traction(
+    const unsigned int i,
+    const ContactNode<dim> &,
+    const Tensor<1, dim> &slip,
+    const Tensor<1, dim> &) const
+  {
+    // The multiplier and the tangential springs' traction.
+    return (tangential_multipliers.empty() ? Tensor<1, dim>() :
+                                             tangential_multipliers[i]) -
+           tangential_stiffness(i) * slip;
+  }
+
+  template <int dim>
+  double
+  AugmentedLagrangianFormulation<dim>::tangential_stiffness(
+    const unsigned int) const
+  {
+    return 1. / epsilon;
+  }
+
+  template <int dim>
+  double
+  AugmentedLagrangianFormulation<dim>::shear_weight() const
+  {
+    return 0.;
   }
 
   template <int dim>

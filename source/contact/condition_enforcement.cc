@@ -177,8 +177,9 @@ namespace signorini
 
       /** The obstacle's tangential forces of @p node, which its force
        * @p equations E f + G u = v bind to its normal spring's force
-       * f_n = k (v_n - n.u) (of the @p normal condition n.u = v_n and the
-       * spring's @p stiffness k): f_T = A^-1 (v - G u - (E n) f_n) along
+       * f_n = k (v_n - n.u) + m lambda (of the @p normal condition n.u =
+       * v_n, the spring's @p stiffness k and the augmented Lagrangian's
+       * @p multiplier force m lambda): f_T = A^-1 (v - G u - (E n) f_n) along
        * its free tangents t_j, A_ij = e_i.t_j; a block on its dofs. */
       template <int dim>
       void
@@ -186,6 +187,7 @@ namespace signorini
                            const NodeCondition<dim>             &normal,
                            const std::vector<NodeEquation<dim>> &equations,
                            const double                          stiffness,
+                           const double                          multiplier,
                            SystemAdditions<dim>                 &additions)
       {
         std::vector<Tensor<1, dim>> tangents;
@@ -215,8 +217,8 @@ namespace signorini
               {
                 const double en = equations[i].direction * n;
                 w += a(j, i) * (equations[i].displacement - stiffness * en * n);
-                r += a(j, i) *
-                     (equations[i].value - stiffness * en * normal.value);
+                r += a(j, i) * (equations[i].value -
+                                en * (stiffness * normal.value + multiplier));
               }
             for (unsigned int p = 0; p < dim; ++p)
               {
@@ -311,6 +313,7 @@ namespace signorini
                 const std::vector<NodeTraction<dim>> &tractions,
                 const double                          epsilon,
                 const std::vector<double>            &multipliers,
+                const std::vector<Tensor<1, dim>>    &tangential_multipliers,
                 SystemAdditions<dim>                 &additions)
     {
       // The spring's force (k (value - d.u)) d, k = m / epsilon: at a
@@ -330,8 +333,14 @@ namespace signorini
             const double stiffness = node.mass / epsilon;
             if (!equations.empty() && !conditions.empty())
               {
-                add_spring_equations(
-                  node, conditions.front(), equations, stiffness, additions);
+                add_spring_equations(node,
+                                     conditions.front(),
+                                     equations,
+                                     stiffness,
+                                     multipliers.empty() ?
+                                       0. :
+                                       node.mass * multipliers[i],
+                                     additions);
                 additions.symmetric = false;
               }
             for (unsigned int c = 0; c < conditions.size(); ++c)
@@ -349,11 +358,18 @@ namespace signorini
                     block.rhs[a] = -(rest * d[a]);
                   }
                 additions.blocks.push_back(block);
-                if (c == 0 && !multipliers.empty())
+                // The multipliers' forces: m lambda along the normal, and
+                // along a sticking node's tangents m lambda_t.
+                const double lambda =
+                  c == 0 ? (multipliers.empty() ? 0. : multipliers[i]) :
+                           (tangential_multipliers.empty() ?
+                              0. :
+                              tangential_multipliers[i] * d);
+                if (lambda != 0.)
                   for (unsigned int a = 0; a < dim; ++a)
                     if (d[a] != 0. && node.free[a])
                       additions.forces.push_back(
-                        {node.dofs[a], node.mass * multipliers[i] * d[a]});
+                        {node.dofs[a], node.mass * lambda * d[a]});
               }
           }
       additions.has_blocks = true;
@@ -379,6 +395,7 @@ namespace signorini
                 const std::vector<NodeTraction<2>> &,
                 const double,
                 const std::vector<double> &,
+                const std::vector<Tensor<1, 2>> &,
                 SystemAdditions<2> &);
     template void
     add_springs(const ContactSurface<3> &,
@@ -386,6 +403,7 @@ namespace signorini
                 const std::vector<NodeTraction<3>> &,
                 const double,
                 const std::vector<double> &,
+                const std::vector<Tensor<1, 3>> &,
                 SystemAdditions<3> &);
   } // namespace condition_enforcement
 } // namespace signorini

@@ -40,7 +40,8 @@ namespace signorini
           "obstacle (no unit): a node in contact sticks while its shear "
           "traction is below mu x its contact pressure and slips, against "
           "its slip, at that traction. 0: frictionless. Needs Contact/Method "
-          "= active set (exact) or penalty (a regularised stick); slip is counted over each load step (Load "
+          "= active set (exact), penalty (a regularised stick) or augmented "
+          "lagrangian (exact as its updates converge); slip is counted over each load step (Load "
           "history).");
         prm.declare_entry(
           "Tresca slip bound",
@@ -113,8 +114,7 @@ namespace signorini
     if (!method_solves)
       throw InputError("Contact/Method",
                        "friction (an obstacle's Friction coefficient or "
-                       "Tresca slip bound) is solved by the active set "
-                       "and the penalty method only, not by '" +
+                       "Tresca slip bound) needs a contact method, not '" +
                          method + "'");
     if (matrix_free)
       throw InputError("Linear solver/Type",

@@ -178,8 +178,18 @@ namespace signorini
     tractions.resize(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        tractions[i]     = traction(i, nodes[i], true);
-        const auto state = law.state(nodes[i], tractions[i]);
+        const auto previous = tractions[i].tangential;
+        tractions[i]        = traction(i, nodes[i], true);
+        auto state          = law.state(nodes[i], tractions[i]);
+        // A slip whose augmented shear turned against the one it was
+        // linearised with passes through stick: where zeta does not hold
+        // the obstacle's traction (a penalty's, an augmented Lagrangian's
+        // -s / epsilon), a node at its bound otherwise slides to and fro
+        // (the Cattaneo-Mindlin disk by the augmented Lagrangian stalled).
+        if (state == NodeState::slip && nodes[i].state == NodeState::slip &&
+            tractions[i].shear_weight == 0. &&
+            previous * tractions[i].tangential < 0.)
+          state = NodeState::stick;
         if (nodes[i].owned && state != nodes[i].state)
           ++changes;
         nodes[i].state = state;

@@ -153,7 +153,7 @@ namespace signorini
     SystemAdditions<dim>                 &additions) const
   {
     condition_enforcement::add_springs(
-      surface, law, tractions, epsilon, {}, additions);
+      surface, law, tractions, epsilon, {}, {}, additions);
     additions.key = {surface.active_set_signature(), epsilon};
     // A slipping node's springs change with its slip direction, which the
     // signature does not hold: such a system is never reused.

@@ -13,7 +13,11 @@ namespace signorini
    * Each inner problem has the pressure [lambda - gap / epsilon]_+ and is
    * solved by semismooth Newton; lambda then takes that pressure. At
    * convergence the penetration vanishes, without the penalty's
-   * ill-conditioning. Remedy: multipliers that shrink by less than half per
+   * ill-conditioning. With friction, a tangential multiplier lambda_t
+   * (the shear traction) beside it: a node's augmented shear traction is
+   * lambda_t - s / epsilon for its slip s, and lambda_t takes the shear of
+   * the inner solution, so that the stick becomes exact as the updates
+   * converge. Remedy: multipliers that shrink by less than half per
    * update get a ten times stiffer penalty.
    */
   template <int dim>
@@ -42,6 +46,18 @@ namespace signorini
                       const double            gap,
                       const double            pressure) const override;
 
+    dealii::Tensor<1, dim>
+    tangential_traction(const unsigned int            i,
+                        const ContactNode<dim>       &node,
+                        const dealii::Tensor<1, dim> &slip,
+                        const dealii::Tensor<1, dim> &traction) const override;
+
+    double
+    tangential_stiffness(const unsigned int i) const override;
+
+    double
+    shear_weight() const override;
+
     void
     linearise(const ContactSurface<dim>            &surface,
               const ContactLaw<dim>                &law,
@@ -56,8 +72,8 @@ namespace signorini
            dealii::ConditionalOStream &pcout) const override;
 
   private:
-    /** Sets the multipliers to the current pressure; returns the largest
-     * change relative to the largest pressure. */
+    /** Sets the multipliers to the current pressure (and shear traction);
+     * returns the largest change relative to the largest pressure. */
     double
     update_multipliers(const NewtonDriver<dim> &newton);
 
@@ -70,6 +86,10 @@ namespace signorini
     double touching_tolerance = 0.;
     /** lambda [MPa] of each contact node (owned nodes; zero elsewhere). */
     std::vector<double> multipliers;
+    /** lambda_t [MPa] of each contact node, with friction (else empty). */
+    std::vector<dealii::Tensor<1, dim>> tangential_multipliers;
+    /** Systems with slipping nodes so far (each is built anew). */
+    mutable std::size_t linearisations     = 0;
     unsigned int        multiplier_updates = 0;
   };
 } // namespace signorini

@@ -41,18 +41,22 @@ namespace signorini
      * stiffness m / @p epsilon [N/mm] pulling towards it, the block
      * (m / epsilon) d d^T with the right-hand side (m / epsilon) value d;
      * with the force m lambda_i d of the node's first condition where
-     * @p multipliers (indexed like the nodes, [MPa]) is not empty. (Force
-     * equations are not enforced by springs: the laws with them need the
-     * exact enforcement.)
+     * @p multipliers (indexed like the nodes, [MPa]) is not empty, and
+     * m (lambda_t . d) d of its other (tangential) conditions where
+     * @p tangential_multipliers is. A node's force equations (a slipping
+     * node's) bind its tangential force to its normal spring's force:
+     * another spring, not symmetric.
      */
     template <int dim>
     void
-    add_springs(const ContactSurface<dim>            &surface,
-                const ContactLaw<dim>                &law,
-                const std::vector<NodeTraction<dim>> &tractions,
-                const double                          epsilon,
-                const std::vector<double>            &multipliers,
-                SystemAdditions<dim>                 &additions);
+    add_springs(
+      const ContactSurface<dim>                 &surface,
+      const ContactLaw<dim>                     &law,
+      const std::vector<NodeTraction<dim>>      &tractions,
+      const double                               epsilon,
+      const std::vector<double>                 &multipliers,
+      const std::vector<dealii::Tensor<1, dim>> &tangential_multipliers,
+      SystemAdditions<dim>                      &additions);
   } // namespace condition_enforcement
 } // namespace signorini
 
