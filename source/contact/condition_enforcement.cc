@@ -373,7 +373,9 @@ namespace signorini
               }
           }
       additions.has_blocks = true;
-      additions.has_forces = !multipliers.empty();
+      // The same on every process (one may hold no contact node).
+      additions.has_forces = Utilities::MPI::logical_or(!multipliers.empty(),
+                                                        surface.communicator());
       // Slipping nodes' forces are not symmetric in their displacements.
       additions.symmetric = !Utilities::MPI::logical_or(!additions.symmetric,
                                                         surface.communicator());

@@ -152,6 +152,11 @@ namespace signorini
 
     if (additions.has_forces)
       {
+        // Every process ends the copy's insertion together: the first
+        // addition after an insertion makes a Trilinos vector assemble
+        // (collectively) where it is made, and a process without forces
+        // makes none (the augmented Lagrangian on two processes hung).
+        system_rhs.compress(VectorOperation::insert);
         for (const auto &force : additions.forces)
           if (!constraints.is_constrained(force.dof))
             system_rhs(force.dof) += force.value;
