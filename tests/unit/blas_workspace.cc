@@ -4,9 +4,10 @@
 // not reserve, rather than leave OpenBLAS to retry for ever; with the
 // memory given back it reserves the work space, and a dense kernel called
 // after the memory has run out again returns (without the reservation,
-// OpenBLAS hung there: the test would time out).
+// OpenBLAS hangs there: the test would time out; checked by hand).
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <signorini/base/failures.h>
 #include <signorini/base/memory.h>
@@ -18,19 +19,6 @@
 #include <string>
 #include <sys/resource.h>
 #include <vector>
-
-extern "C" void
-dtrsm_(const char   *side,
-       const char   *uplo,
-       const char   *transa,
-       const char   *diag,
-       const int    *m,
-       const int    *n,
-       const double *alpha,
-       const double *a,
-       const int    *lda,
-       double       *b,
-       const int    *ldb);
 
 namespace
 {
@@ -99,11 +87,18 @@ main(int argc, char **argv)
 
   blocks = exhaust();
   give_back(blocks, 1);
-  const int    one   = 1;
-  const double alpha = 2., a = 4.;
-  double       b = 1.;
-  dtrsm_("L", "L", "N", "N", &one, &one, &alpha, &a, &one, &b, &one);
-  std::cout << "a dense kernel with 16 MB left: " << b << std::endl;
-  checks::expect("the kernel's result", b == 0.5);
+  // A product of 256 x 256 matrices: a level-3 kernel (dgemm) large
+  // enough to take the work space (64 x 64 does not).
+  const unsigned int               n = 256;
+  dealii::LAPACKFullMatrix<double> a(n), b(n), c(n);
+  for (unsigned int i = 0; i < n; ++i)
+    {
+      a(i, i) = 2.;
+      b(i, i) = 0.25;
+    }
+  a.mmult(c, b);
+  std::cout << "a dense kernel with 16 MB left: " << c(n - 1, n - 1)
+            << std::endl;
+  checks::expect("the kernel's result", c(n - 1, n - 1) == 0.5);
   give_back(blocks, blocks.size());
 }
