@@ -67,7 +67,27 @@ namespace signorini
     // Where the supports hold the body, the solver's own message stands,
     // with the material's question if there is one.
     if (!supports_hold)
-      return "is the body held against rigid motion?";
+      {
+        // Held along the obstacle by friction alone, a body whose every
+        // node in contact slips has nothing to hold it there.
+        if (law.path_dependent())
+          {
+            unsigned int stick = 0, slip = 0;
+            for (const auto &node : surface.nodes())
+              if (node.owned)
+                {
+                  stick += node.state == NodeState::stick ? 1 : 0;
+                  slip += node.state == NodeState::slip ? 1 : 0;
+                }
+            const MPI_Comm comm = discretisation.mpi_communicator();
+            if (Utilities::MPI::sum(slip, comm) > 0 &&
+                Utilities::MPI::sum(stick, comm) == 0)
+              return "every node in contact slips, and nothing else holds "
+                     "the body along the obstacle: is the tangential load "
+                     "above the friction bound (mu times the normal force)?";
+          }
+        return "is the body held against rigid motion?";
+      }
     return material_question.empty() ?
              std::string() :
              "the supports hold the body against every rigid motion: " +
