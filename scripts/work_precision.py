@@ -12,6 +12,12 @@ and draws error against time, log-log, one curve per method and refinement.
     scripts/work-precision --quick   a small sweep (under two minutes) into
                                      build/work-precision-quick/, checked;
                                      what the ctest runs
+    scripts/work-precision --friction
+                                     the same with friction, on the
+                                     Cattaneo-Mindlin scene (error of the
+                                     stick zone's width):
+                                     doc/friction-work-precision.png and its
+                                     table in doc/friction.md (a minute)
 
 Runs go to build/work-precision/ (or build/work-precision-quick/).
 
@@ -42,6 +48,16 @@ SCENES = {
                    {"Reference": {"Energy": REFERENCE_ENERGY}},
                    ["1e-5", "1e-6", "1e-7"],
                    {"kelly": 8, "global": 5}, {"kelly": 4, "global": 3}),
+}
+
+
+# With friction: the Cattaneo-Mindlin scene (two load steps a cycle; a point
+# is a cycle's last step), the error of the stick zone's width.
+FRICTION_SCENES = {
+    "cattaneo_mindlin": ("Cattaneo-Mindlin: stick width error",
+                         "prm/cattaneo_mindlin.prm", "stick_width_error", {},
+                         ["1e-5", "1e-6", "1e-7"],
+                         {"kelly": 8, "global": 4}, {"kelly": 4, "global": 3}),
 }
 
 
@@ -80,16 +96,19 @@ def run_case(work, scene, label, prm, settings, refinement, cycles):
     name = "%s-%s-%s" % (scene, label.replace(" ", "_").replace("=", ""),
                          refinement)
     run = common.run(work, name, prm, settings)
+    # With a load history, a cycle's last step (the timings are per cycle).
+    steps = max(int(row.get("step", 1)) for row in run.rows)
+    rows = [row for row in run.rows if int(row.get("step", 1)) == steps]
     return [dict(s, **{"run_time": t["run_time"]})
-            for s, t in zip(run.rows, run.timings)]
+            for s, t in zip(rows, run.timings)]
 
 
-def sweep(work, quick):
+def sweep(work, quick, scenes=None):
     """Runs every combination; returns {(scene, method, refinement): rows}
     with each row the statistics and timings of one cycle."""
     results = {}
     for scene, (_, prm, _, extra, epsilons, cycles, quick_cycles) in \
-            SCENES.items():
+            (scenes or SCENES).items():
         for label, contact in methods(epsilons, quick or common.SMOKE):
             for refinement in ("kelly", "global"):
                 settings = dict(extra)
@@ -116,12 +135,13 @@ def first_below(rows, column, bound):
     return None
 
 
-def chart(work, results, path):
+def chart(work, results, path, scenes=None):
     """error against run time, log-log, a panel per scene."""
+    scenes = scenes or SCENES
     colours = ["#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e",
                "#e6ab02"]
     panels = []
-    for scene, (title, _, column, *_rest) in SCENES.items():
+    for scene, (title, _, column, *_rest) in scenes.items():
         labels = []
         for (s, label, _), _rows in results.items():
             if s == scene and label not in labels:
@@ -143,18 +163,19 @@ def chart(work, results, path):
             "set ylabel 'relative error'\nplot %s\n" %
             (title, ", \\\n  ".join(plots)))
     common.gnuplot(
-        "set terminal pngcairo size 1400,560 font ',10'\n"
+        "set terminal pngcairo size %d,560 font ',10'\n"
         "set output '%s'\nset logscale xy\nset grid\n"
-        "set key bottom left font ',8'\nset multiplot layout 1,2\n%s"
-        "unset multiplot\n" % (path, "".join(panels)))
+        "set key bottom left font ',8'\nset multiplot layout 1,%d\n%s"
+        "unset multiplot\n" % (700 * len(panels), path, len(panels),
+                                "".join(panels)))
 
 
-def final_table(results):
+def final_table(results, scenes=None):
     """The last cycle of every run."""
     rows = []
     for (scene, label, refinement), cycles in results.items():
         last = cycles[-1]
-        column = SCENES[scene][2]
+        column = (scenes or SCENES)[scene][2]
         rows.append([scene, label, refinement, "%d" % (last["cycle"] + 1),
                      "{:,}".format(int(last["dofs"])),
                      "%d" % sum(r["iterations"] for r in cycles),
@@ -224,8 +245,26 @@ def check(results):
     return failures
 
 
+def friction():
+    """The sweep with friction: its chart, and its table in
+    doc/friction.md."""
+    work = common.work_folder("work-precision-friction")
+    os.makedirs(work, exist_ok=True)
+    common.ensure_tools()
+    results = sweep(work, common.SMOKE, FRICTION_SCENES)
+    text = final_table(results, FRICTION_SCENES)
+    print(text)
+    chart(work, results, common.output_file("doc/friction-work-precision.png"),
+          FRICTION_SCENES)
+    common.replace_sections(common.output_file("doc/friction.md"),
+                            {"friction-cycles": text})
+
+
 def main():
     quick = sys.argv[1:] == ["--quick"]
+    if sys.argv[1:] == ["--friction"]:
+        friction()
+        return
     if sys.argv[1:] not in ([], ["--quick"]):
         sys.exit(__doc__)
     work = common.work_folder("work-precision-quick" if quick
