@@ -53,8 +53,20 @@ namespace signorini
   bool
   FrictionLaw<dim>::frictional(const ContactNode<dim> &node) const
   {
-    return node.corner == numbers::invalid_unsigned_int &&
-           (coefficient[node.obstacle] > 0 || slip_bound[node.obstacle] > 0);
+    if (node.corner != numbers::invalid_unsigned_int ||
+        !(coefficient[node.obstacle] > 0 || slip_bound[node.obstacle] > 0))
+      return false;
+    // A tangent that a support holds in part (the apex of a wedge on its
+    // symmetry line, against an inclined wall) leaves the node no slip
+    // along the obstacle that friction could resist: it is frictionless,
+    // as at a corner. (A tangent held whole, or free, is friction's.)
+    for (const auto &t : node.tangents)
+      {
+        const double free = ContactSurface<dim>::free_part(t, node.free);
+        if (free >= ContactSurface<dim>::fixed_along_normal && free < 1. - 1e-8)
+          return false;
+      }
+    return true;
   }
 
   template <int dim>

@@ -59,7 +59,8 @@ namespace signorini
                std::vector<NodeCondition<dim>> &conditions,
                std::vector<NodeEquation<dim>>  &equations) const override;
 
-    /** Whether @p node has friction (its obstacle's, not at a corner). */
+    /** Whether @p node has friction (its obstacle's, not at a corner, nor
+     * where a support holds a tangent in part). */
     bool
     frictional(const ContactNode<dim> &node) const override;
 
