@@ -10,6 +10,7 @@ main(int argc, char **argv)
 {
   signorini::tune_allocator();
   signorini::use_private_mpi_session_folder();
+  signorini::start_isolated_singleton();
   // Threads: as many as there are cores per process (one process on two
   // cores estimates errors and builds output patches on both).
   dealii::Utilities::MPI::MPI_InitFinalize mpi(
