@@ -77,11 +77,7 @@ namespace signorini
     SystemAdditions<dim>                 &additions) const
   {
     condition_enforcement::add_constraints(surface, law, tractions, additions);
-    additions.key = {surface.active_set_signature(), 0.};
-    // A slipping node's equation changes with its slip direction, which
-    // the signature does not hold: such a system is never reused.
-    if (additions.has_test_weights)
-      additions.key.first.second += ++linearisations;
+    additions.key           = {surface.active_set_signature(), 0.};
     additions.local_changes = true;
   }
 

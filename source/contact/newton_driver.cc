@@ -347,6 +347,11 @@ namespace signorini
     additions = SystemAdditions<dim>();
     tractions.resize(surface.nodes().size());
     formulation.linearise(surface, law, tractions, additions);
+    // A slipping node's rows change with its slip direction, which the
+    // active set's signature does not hold: a system that is not
+    // symmetric is never reused.
+    if (!additions.symmetric)
+      additions.key.first.second += ++nonsymmetric_systems;
   }
 
   template <int dim>

@@ -155,10 +155,6 @@ namespace signorini
     condition_enforcement::add_springs(
       surface, law, tractions, epsilon, {}, {}, additions);
     additions.key = {surface.active_set_signature(), epsilon};
-    // A slipping node's springs change with its slip direction, which the
-    // signature does not hold: such a system is never reused.
-    if (!additions.symmetric)
-      additions.key.first.second += ++linearisations;
   }
 
   template <int dim>

@@ -69,8 +69,6 @@ namespace signorini
     /** Cycle breaking: update by the signs of pressure and gap alone, for
      * the rest of the cycle. */
     bool sign_rule = false;
-    /** Linearisations with slipping nodes: each a matrix of its own. */
-    mutable std::size_t linearisations = 0;
   };
 } // namespace signorini
 

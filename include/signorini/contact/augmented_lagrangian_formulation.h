@@ -88,9 +88,7 @@ namespace signorini
     std::vector<double> multipliers;
     /** lambda_t [MPa] of each contact node, with friction (else empty). */
     std::vector<dealii::Tensor<1, dim>> tangential_multipliers;
-    /** Systems with slipping nodes so far (each is built anew). */
-    mutable std::size_t linearisations     = 0;
-    unsigned int        multiplier_updates = 0;
+    unsigned int                        multiplier_updates = 0;
   };
 } // namespace signorini
 

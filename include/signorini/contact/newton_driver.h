@@ -178,6 +178,8 @@ namespace signorini
     VectorType                 contact_residual;
     /** See tangential_traction(); ghosted. */
     VectorType tangential_pressure;
+    /** Systems that were not symmetric so far: each is assembled anew. */
+    std::size_t nonsymmetric_systems = 0;
     /** See carry_over(). */
     bool carried_over = false;
     /** Each node's tractions of the last state update (for the law's

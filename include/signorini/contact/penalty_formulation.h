@@ -98,8 +98,6 @@ namespace signorini
     double touching_tolerance = 0.;
     /** Cycle breaking: every negative gap is penetrating. */
     bool sign_rule = false;
-    /** Systems with slipping nodes so far (each is built anew). */
-    mutable std::size_t linearisations = 0;
   };
 } // namespace signorini
 
