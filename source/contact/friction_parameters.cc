@@ -97,8 +97,7 @@ namespace signorini
   void
   FrictionParameters::check(const std::vector<unsigned int> &obstacle_numbers,
                             const std::string               &method,
-                            const bool                       method_solves,
-                            const bool                       matrix_free) const
+                            const bool method_solves) const
   {
     for (unsigned int number = 1; number <= max_obstacles; ++number)
       if ((coefficient[number - 1] > 0 || slip_bound[number - 1] > 0) &&
@@ -116,10 +115,5 @@ namespace signorini
                        "friction (an obstacle's Friction coefficient or "
                        "Tresca slip bound) needs a contact method, not '" +
                          method + "'");
-    if (matrix_free)
-      throw InputError("Linear solver/Type",
-                       "matrix-free does not solve friction's non-symmetric "
-                       "slip rows yet: choose amg cg (GMRES is used where the "
-                       "system is not symmetric) or direct");
   }
 } // namespace signorini

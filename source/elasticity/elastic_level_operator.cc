@@ -74,7 +74,9 @@ namespace signorini
     constrained.clear();
     identity.clear();
     held.clear();
+    held_test.clear();
     blocks.clear();
+    symmetric_blocks.clear();
     diagonal_without_contact.reinit(0);
     inverse.reinit(0);
     projected.reinit(0);
@@ -270,7 +272,15 @@ namespace signorini
   void
   ElasticLevelOperator<dim>::vmult(VectorType &dst, const VectorType &src) const
   {
-    apply<double>(dst, src);
+    apply<double, false>(dst, src);
+  }
+
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::vmult_newton(VectorType       &dst,
+                                          const VectorType &src) const
+  {
+    apply<double, true>(dst, src);
   }
 
   template <int dim>
@@ -278,11 +288,11 @@ namespace signorini
   ElasticLevelOperator<dim>::vmult_single(VectorType       &dst,
                                           const VectorType &src) const
   {
-    apply<float>(dst, src);
+    apply<float, false>(dst, src);
   }
 
   template <int dim>
-  template <typename CellNumber>
+  template <typename CellNumber, bool newton>
   void
   ElasticLevelOperator<dim>::apply(VectorType &dst, const VectorType &src) const
   {
@@ -303,11 +313,14 @@ namespace signorini
         input = &projected;
       }
     cell_loop<false, CellNumber>(dst, *input);
-    // P^T: a held row's force goes to the dofs it is solved from.
-    for (const auto &[dof, entries] : held)
-      for (const auto &[master, weight] : entries)
-        dst.local_element(master) += weight * dst.local_element(dof);
-    for (const auto &[dofs, stiffness] : blocks)
+    // P^T (T^T): a held row's force goes to the dofs it is solved from,
+    // with its test weights in the Newton system.
+    for (std::size_t line = 0; line < held.size(); ++line)
+      for (const auto &[master, weight] :
+           newton ? held_test[line] : held[line].second)
+        dst.local_element(master) +=
+          weight * dst.local_element(held[line].first);
+    for (const auto &[dofs, stiffness] : newton ? blocks : symmetric_blocks)
       for (unsigned int a = 0; a < dim; ++a)
         for (unsigned int b = 0; b < dim; ++b)
           if (stiffness[a][b] != 0.)
@@ -339,9 +352,10 @@ namespace signorini
   void
   ElasticLevelOperator<dim>::condense(VectorType &force) const
   {
-    for (const auto &[dof, entries] : held)
-      for (const auto &[master, weight] : entries)
-        force.local_element(master) += weight * force.local_element(dof);
+    for (std::size_t line = 0; line < held.size(); ++line)
+      for (const auto &[master, weight] : held_test[line])
+        force.local_element(master) +=
+          weight * force.local_element(held[line].first);
     for (const unsigned int i : identity)
       force.local_element(i) = 0.;
   }
@@ -502,12 +516,19 @@ namespace signorini
                                          std::vector<NodalBlock> nodal_blocks)
   {
     held.clear();
+    held_test.clear();
+    const auto to_local = [this](const auto &global) {
+      std::vector<std::pair<unsigned int, double>> entries;
+      for (const auto &[master, weight] : global)
+        entries.emplace_back(partitioner->global_to_local(master), weight);
+      return entries;
+    };
     for (const auto &line : held_lines)
       {
-        std::vector<std::pair<unsigned int, double>> entries;
-        for (const auto &[master, weight] : line.entries)
-          entries.emplace_back(partitioner->global_to_local(master), weight);
-        held.emplace_back(partitioner->global_to_local(line.dof), entries);
+        held.emplace_back(partitioner->global_to_local(line.dof),
+                          to_local(line.entries));
+        held_test.push_back(line.petrov_galerkin ? to_local(line.test_entries) :
+                                                   held.back().second);
       }
     identity = constrained;
     for (const auto &line : held)
@@ -515,6 +536,7 @@ namespace signorini
     std::sort(identity.begin(), identity.end());
 
     blocks.clear();
+    symmetric_blocks.clear();
     for (const auto &block : nodal_blocks)
       {
         std::array<unsigned int, dim> local;
@@ -531,6 +553,11 @@ namespace signorini
             if (!acting[a] || !acting[b])
               stiffness[a][b] = 0.;
         blocks.emplace_back(local, stiffness);
+        auto symmetric = stiffness;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            symmetric[a][b] = 0.5 * (stiffness[a][b] + stiffness[b][a]);
+        symmetric_blocks.emplace_back(local, symmetric);
       }
 
     // The diagonal of P^T A P + blocks, without the cross terms of the held
@@ -540,7 +567,7 @@ namespace signorini
       for (const auto &[master, weight] : entries)
         inverse.local_element(master) +=
           weight * weight * diagonal_without_contact.local_element(dof);
-    for (const auto &[dofs, stiffness] : blocks)
+    for (const auto &[dofs, stiffness] : symmetric_blocks)
       for (unsigned int a = 0; a < dim; ++a)
         inverse.local_element(dofs[a]) += stiffness[a][a];
     for (const unsigned int i : identity)
@@ -566,7 +593,8 @@ namespace signorini
   template <int dim>
   void
   ElasticLevelOperator<dim>::assemble_matrix(
-    TrilinosWrappers::SparseMatrix &matrix) const
+    TrilinosWrappers::SparseMatrix &matrix,
+    const std::vector<NodalBlock>  &springs) const
   {
     const auto    &dofs = *dof_handler;
     const MPI_Comm comm = dofs.get_communicator();
@@ -611,13 +639,21 @@ namespace signorini
                                       &ElasticLevelOperator::apply_cell,
                                       this);
     // The contact of a coarse level: nodal blocks, no held lines.
-    for (const auto &[dofs_of, stiffness] : blocks)
+    for (const auto &[dofs_of, stiffness] : symmetric_blocks)
       for (unsigned int a = 0; a < dim; ++a)
         for (unsigned int b = 0; b < dim; ++b)
           if (stiffness[a][b] != 0.)
             matrix.add(partitioner->local_to_global(dofs_of[a]),
                        partitioner->local_to_global(dofs_of[b]),
                        stiffness[a][b]);
+    // Springs at the dofs that are not constrained (held ones included).
+    for (const auto &[dofs_of, stiffness] : springs)
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          if (stiffness[a][b] != 0. &&
+              !constraints->is_constrained(dofs_of[a]) &&
+              !constraints->is_constrained(dofs_of[b]))
+            matrix.add(dofs_of[a], dofs_of[b], stiffness[a][b]);
     matrix.compress(VectorOperation::add);
   }
 

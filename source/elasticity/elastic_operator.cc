@@ -15,7 +15,6 @@ namespace signorini
                           const LinearSolverParameters  &parameters,
                           const bool                     remedies,
                           const bool                     verbose,
-                          const bool                     test_weights,
                           ConditionalOStream            &pcout,
                           TimerOutput                   &timer)
   {
@@ -43,7 +42,7 @@ namespace signorini
           return std::make_unique<AutomaticOperator<dim>>(
             discretisation,
             !material.axisymmetric() &&
-              !material.template mean_dilatation<dim>(false) && !test_weights,
+              !material.template mean_dilatation<dim>(false),
             make);
         default:
           return make(false);
@@ -58,7 +57,6 @@ namespace signorini
                           const LinearSolverParameters &,
                           bool,
                           bool,
-                          bool,
                           ConditionalOStream &,
                           TimerOutput &);
   template std::unique_ptr<ElasticOperator<3>>
@@ -67,7 +65,6 @@ namespace signorini
                           const BoundaryConditions<3> &,
                           Loads<3> &,
                           const LinearSolverParameters &,
-                          bool,
                           bool,
                           bool,
                           ConditionalOStream &,

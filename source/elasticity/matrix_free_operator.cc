@@ -35,6 +35,21 @@ namespace signorini
           dst.local_element(i) = 0.;
       }
     };
+
+    /** The Newton system of the fine level for GMRES, where it is not
+     * symmetric (the multigrid smooths with its symmetric part). */
+    template <int dim>
+    struct NewtonSystem
+    {
+      const ElasticLevelOperator<dim> &fine;
+
+      void
+      vmult(LinearAlgebra::distributed::Vector<double>       &dst,
+            const LinearAlgebra::distributed::Vector<double> &src) const
+      {
+        fine.vmult_newton(dst, src);
+      }
+    };
   } // namespace
 
   template <int dim>
@@ -176,21 +191,26 @@ namespace signorini
   MatrixFreeOperator<dim>::setup_contact(const SystemAdditions<dim> &additions)
   {
     TimerOutput::Scope t(timer, "Solve: multigrid contact");
-    if (additions.has_test_weights)
-      throw SolverFailure(exit_status::linear_solver,
-                          "the matrix-free operator does not condense lines "
-                          "with test weights of their own (friction's "
-                          "slipping nodes): use Linear solver/Type = amg cg "
-                          "or direct");
     // The additions' constraint lines, closed with the discretisation's
-    // constraints as AssembledOperator does.
-    constraints.clear();
-    constraints.reinit(discretisation.locally_relevant_dofs());
-    additions.add_constraints(constraints);
-    constraints.merge(discretisation.constraints(),
-                      AffineConstraints<double>::left_object_wins);
-    constraints.close();
+    // constraints as AssembledOperator does; and with their test weights
+    // (a slipping node's lines: the equations' side).
+    const auto closed = [&](AffineConstraints<double> &lines,
+                            const bool                 test_weights) {
+      lines.clear();
+      lines.reinit(discretisation.locally_relevant_dofs());
+      if (test_weights)
+        additions.add_test_constraints(lines);
+      else
+        additions.add_constraints(lines);
+      lines.merge(discretisation.constraints(),
+                  AffineConstraints<double>::left_object_wins);
+      lines.close();
+    };
+    closed(constraints, false);
     local_constraints.reinit(constraints, load_la.get_partitioner());
+    AffineConstraints<double> test_constraints;
+    if (additions.has_test_weights)
+      closed(test_constraints, true);
 
     const auto &owned = discretisation.locally_owned_dofs();
     std::vector<typename ElasticLevelOperator<dim>::HeldLine> held;
@@ -202,6 +222,13 @@ namespace signorini
           if (const auto *entries =
                 constraints.get_constraint_entries(added.dof))
             line.entries = *entries;
+          if (added.petrov_galerkin)
+            if (const auto *entries =
+                  test_constraints.get_constraint_entries(added.dof))
+              {
+                line.petrov_galerkin = true;
+                line.test_entries    = *entries;
+              }
           held.push_back(line);
         }
 
@@ -269,7 +296,8 @@ namespace signorini
     fine->internal_force(r, u);
     r -= load_la;
     // The blocks' force M u - rhs, and the forces, on the rows that are
-    // not constrained (condense() zeroes the others).
+    // not constrained (condense() zeroes the others, after moving a held
+    // row's force to its masters with its test weights).
     if (additions.has_blocks)
       for (const auto &block : additions.blocks)
         for (unsigned int a = 0; a < dim; ++a)
@@ -343,7 +371,7 @@ namespace signorini
         else
           {
             SolverGMRES<LAVector> gmres(control, gmres_data<LAVector>());
-            gmres.solve(*fine, d, rhs, preconditioner);
+            gmres.solve(NewtonSystem<dim>{*fine}, d, rhs, preconditioner);
           }
       }
     catch (const SolverControl::NoConvergence &failure)

@@ -137,9 +137,7 @@ namespace signorini
       obstacle_numbers.push_back(description.number);
     friction.check(obstacle_numbers,
                    ContactParameters::methods().name(contact.method),
-                   contact.method != ContactParameters::Method::none,
-                   linear_solver.type ==
-                     LinearSolverParameters::Type::matrix_free);
+                   contact.method != ContactParameters::Method::none);
     if (material.axisymmetric())
       {
         if (dim != 2)

@@ -33,7 +33,6 @@ namespace signorini
                                                parameters.linear_solver,
                                                parameters.contact.remedies,
                                                parameters.output.verbose,
-                                               parameters.friction.any(),
                                                pcout,
                                                timer))
     , obstacle(create_obstacles(parameters.obstacle))

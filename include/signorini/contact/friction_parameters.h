@@ -41,12 +41,11 @@ namespace signorini
     /** Throws InputError for friction in a subsection that is no obstacle
      * (not in @p obstacle_numbers), friction with a Contact/Method that
      * does not solve it (@p method: its name, @p method_solves: whether it
-     * does), or with the matrix-free operator (@p matrix_free). */
+     * does). */
     void
     check(const std::vector<unsigned int> &obstacle_numbers,
           const std::string               &method,
-          const bool                       method_solves,
-          const bool                       matrix_free) const;
+          const bool                       method_solves) const;
   };
 } // namespace signorini
 

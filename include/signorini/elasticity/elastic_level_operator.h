@@ -39,7 +39,14 @@ namespace signorini
    *   operator being P^T A P with P the map that sets them; their rows act
    *   as the identity;
    * - nodal blocks: a dim x dim stiffness added at a vertex's dofs (springs
-   *   k n n^T).
+   *   k n n^T), possibly not symmetric.
+   *
+   * A held line may have test weights of its own (Petrov-Galerkin: a
+   * slipping node's): its row's force then goes to its masters with those
+   * weights. The Newton system is then T^T A P + blocks, which
+   * vmult_newton() applies; vmult() applies P^T A P with the blocks'
+   * symmetric parts, the symmetric operator the multigrid smooths with
+   * (the same where nothing breaks the symmetry).
    *
    * One level of ElasticMultigrid, and the fine-level operator that CG
    * solves with.
@@ -58,6 +65,11 @@ namespace signorini
     {
       dealii::types::global_dof_index                                 dof;
       std::vector<std::pair<dealii::types::global_dof_index, double>> entries;
+      /** Whether the row's force goes to the masters with test_entries
+       * (Petrov-Galerkin) rather than with entries. */
+      bool petrov_galerkin = false;
+      std::vector<std::pair<dealii::types::global_dof_index, double>>
+        test_entries;
     };
 
     /** A stiffness at the dofs of a vertex (global indices, owned here);
@@ -86,9 +98,14 @@ namespace signorini
     void
     set_contact(std::vector<HeldLine> held, std::vector<NodalBlock> blocks);
 
-    /** dst = operator * src. */
+    /** dst = operator * src: P^T A P with the blocks' symmetric parts. */
     void
     vmult(VectorType &dst, const VectorType &src) const;
+
+    /** dst = the Newton system * src: T^T A P with the blocks as they are
+     * (vmult() where nothing breaks the symmetry). */
+    void
+    vmult_newton(VectorType &dst, const VectorType &src) const;
 
     /** vmult() with the cells' shape matrices applied in single precision
      * (the vectors, the constraints and the cells without a shape matrix
@@ -106,8 +123,9 @@ namespace signorini
     void
     internal_force(VectorType &dst, const VectorType &u) const;
 
-    /** @p force = P^T @p force (a held dof's force moved to the dofs it is
-     * solved from), then zero at the identity rows. */
+    /** @p force = T^T @p force (a held dof's force moved to the dofs it is
+     * solved from, with its test weights), then zero at the identity
+     * rows. */
     void
     condense(VectorType &force) const;
 
@@ -121,9 +139,13 @@ namespace signorini
     const VectorType &
     diagonal() const;
 
-    /** The operator as a Trilinos matrix (the coarse level's). */
+    /** The operator as a Trilinos matrix (the coarse level's), its held
+     * lines left out, with the @p springs (global indices) added at the
+     * dofs that are not constrained: where the fine level is the only one,
+     * its contact as the coarser levels have it. */
     void
-    assemble_matrix(dealii::TrilinosWrappers::SparseMatrix &matrix) const;
+    assemble_matrix(dealii::TrilinosWrappers::SparseMatrix &matrix,
+                    const std::vector<NodalBlock>          &springs = {}) const;
 
     void
     initialize_dof_vector(VectorType &vector) const;
@@ -148,8 +170,10 @@ namespace signorini
     get_dof_handler() const;
 
   private:
-    /** dst = operator * src, the shape matrices applied in CellNumber. */
-    template <typename CellNumber>
+    /** dst = operator * src, the shape matrices applied in CellNumber:
+     * the Newton system's (T^T A P, whole blocks) if @p newton, else the
+     * symmetric one's (P^T A P, the blocks' symmetric parts). */
+    template <typename CellNumber, bool newton>
     void
     apply(VectorType &dst, const VectorType &src) const;
 
@@ -266,11 +290,14 @@ namespace signorini
     std::vector<
       std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
       held;
+    /** Per held line, its test weights (its entries where it has none of
+     * its own). */
+    std::vector<std::vector<std::pair<unsigned int, double>>> held_test;
     /** The nodal blocks in local indices, without constrained or held
-     * entries. */
+     * entries: as given, and their symmetric parts. */
     std::vector<std::pair<std::array<unsigned int, dim>,
                           std::array<std::array<double, dim>, dim>>>
-               blocks;
+               blocks, symmetric_blocks;
     VectorType diagonal_without_contact;
     VectorType inverse;
     /** src with the held dofs set (mutable scratch of vmult). */

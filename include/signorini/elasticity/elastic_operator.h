@@ -82,10 +82,7 @@ namespace signorini
   /** The elastic operator that Linear solver/Type names: MatrixFreeOperator
    * for `matrix-free`, AssembledOperator otherwise. @p remedies: failed
    * solves are retried (see LinearSystemSolver, MatrixFreeOperator);
-   * @p verbose: the matrix-free operator prints its CG iterations.
-   * @p test_weights: the additions may have lines with test weights of
-   * their own, which the matrix-free operator does not condense (automatic
-   * then assembles; the matrix-free operator fails to solve them). */
+   * @p verbose: the matrix-free operator prints its CG iterations. */
   template <int dim>
   std::unique_ptr<ElasticOperator<dim>>
   create_elastic_operator(const Discretisation<dim>     &discretisation,
@@ -95,7 +92,6 @@ namespace signorini
                           const LinearSolverParameters  &parameters,
                           const bool                     remedies,
                           const bool                     verbose,
-                          const bool                     test_weights,
                           dealii::ConditionalOStream    &pcout,
                           dealii::TimerOutput           &timer);
 } // namespace signorini
