@@ -371,7 +371,14 @@ main()
     for (const auto &name : removed)
       std::cout << ' ' << name;
     std::cout << '\n';
-    list(directory);
+    std::vector<std::string> left;
+    for (const auto &entry : fs::directory_iterator(directory))
+      left.push_back(entry.path().filename().string());
+    std::sort(left.begin(), left.end());
+    std::cout << "  left (" << left.size() << "):";
+    for (const auto &name : left)
+      std::cout << ' ' << name;
+    std::cout << '\n';
     checks::expect("the cycle's solution file, later steps' files, other "
                    "checkpoints and the temporary removed",
                    removed ==
