@@ -81,9 +81,13 @@ namespace signorini
   Interrupted::message(const std::string &file) const
   {
     std::string line = what();
-    if (!finished_cycle)
+    if (finished_step)
+      line += " after load step " + std::to_string(finished_step->first) +
+              " of cycle " + std::to_string(finished_step->second);
+    else if (!finished_cycle)
       return line + " before cycle 0 finished; nothing to resume";
-    line += " after cycle " + std::to_string(*finished_cycle);
+    else
+      line += " after cycle " + std::to_string(*finished_cycle);
     if (resumable)
       return line + "; resume with --resume " + file;
     return line + " (no checkpoint to resume from: Output/Checkpoint is off "

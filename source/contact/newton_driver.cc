@@ -130,6 +130,14 @@ namespace signorini
   }
 
   template <int dim>
+  void
+  NewtonDriver<dim>::restore_tangential_traction(const VectorType &traction)
+  {
+    if (law.path_dependent())
+      tangential_pressure = traction;
+  }
+
+  template <int dim>
   NodeTraction<dim>
   NewtonDriver<dim>::traction(const unsigned int      i,
                               const ContactNode<dim> &node,

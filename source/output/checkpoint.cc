@@ -16,6 +16,7 @@
 #include <functional>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -38,10 +39,12 @@ namespace signorini
       "Checkpoint",
       entry_text::of(defaults.enabled),
       Patterns::Bool(),
-      "After every cycle, write a checkpoint (checkpoint-CC.* in the output "
-      "directory: the mesh, the displacement, the contact pressure, the error "
-      "indicators and the results so far; only the newest is kept), from "
-      "which `signorini --resume FILE.prm` continues an interrupted run.");
+      "After every cycle, and after every load step of a load history, write "
+      "a checkpoint (checkpoint-CC.*, of a step checkpoint-CC-SSS.*, in the "
+      "output directory: the mesh, the displacement, the contact pressure, "
+      "the error indicators and the results so far; only the newest is "
+      "kept), from which `signorini --resume FILE.prm` continues an "
+      "interrupted run.");
     prm.leave_subsection();
   }
 
@@ -126,15 +129,24 @@ namespace signorini
       std::string  error;
       bool         exists = false;
       unsigned int cycle  = 0;
+      /** The step of a checkpoint within its cycle, 0 for none. */
+      unsigned int step = 0;
       std::string  state;
 
       template <class Archive>
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &error &exists &cycle &state;
+        archive &error &exists &cycle &step &state;
       }
     };
+
+    /** The checkpoint whose file is classified as @p member. */
+    CheckpointPoint
+    point_of(const output_series::Member &member)
+    {
+      return {*member.cycle, member.step};
+    }
 
     /** Whether the file system of @p directory has no space left for this
      * process (root may use the blocks reserved for it). */
@@ -157,6 +169,39 @@ namespace signorini
     }
   } // namespace
 
+  bool
+  CheckpointPoint::operator<(const CheckpointPoint &other) const
+  {
+    // After the steps of a cycle comes the cycle (its last step).
+    const auto order = [](const CheckpointPoint &point) {
+      return std::make_pair(point.cycle,
+                            point.step ? *point.step :
+                                         std::numeric_limits<unsigned>::max());
+    };
+    return order(*this) < order(other);
+  }
+
+  bool
+  CheckpointPoint::operator==(const CheckpointPoint &other) const
+  {
+    return cycle == other.cycle && step == other.step;
+  }
+
+  std::string
+  CheckpointPoint::suffix() const
+  {
+    return Utilities::int_to_string(cycle, 2) +
+           (step ? "-" + Utilities::int_to_string(*step, 3) : "");
+  }
+
+  std::ostream &
+  operator<<(std::ostream &out, const CheckpointPoint &point)
+  {
+    if (point.step)
+      out << "step " << *point.step << " of ";
+    return out << "cycle " << point.cycle;
+  }
+
   Checkpoint::Checkpoint(const std::string &directory,
                          const std::string &parameter_text,
                          const MPI_Comm     mpi_communicator)
@@ -167,21 +212,19 @@ namespace signorini
   }
 
   std::string
-  Checkpoint::mesh_file(const unsigned int cycle) const
+  Checkpoint::mesh_file(const CheckpointPoint &point) const
   {
-    return directory + "/checkpoint-" + Utilities::int_to_string(cycle, 2) +
-           ".mesh";
+    return directory + "/checkpoint-" + point.suffix() + ".mesh";
   }
 
   std::string
-  Checkpoint::state_file(const unsigned int cycle) const
+  Checkpoint::state_file(const CheckpointPoint &point) const
   {
-    return directory + "/checkpoint-" + Utilities::int_to_string(cycle, 2) +
-           ".state";
+    return directory + "/checkpoint-" + point.suffix() + ".state";
   }
 
   std::vector<std::string>
-  Checkpoint::mesh_pieces(const unsigned int cycle) const
+  Checkpoint::mesh_pieces(const CheckpointPoint &point) const
   {
     namespace fs = std::filesystem;
     std::vector<std::string> names;
@@ -190,7 +233,7 @@ namespace signorini
       {
         const std::string name   = entry.path().filename().string();
         const auto        member = output_series::classify(name);
-        if (member.checkpoint && !member.partial && *member.cycle == cycle &&
+        if (member.checkpoint && !member.partial && point_of(member) == point &&
             entry.path().extension() != ".state")
           names.push_back(name);
       }
@@ -198,23 +241,23 @@ namespace signorini
     return names;
   }
 
-  std::optional<unsigned int>
+  std::optional<CheckpointPoint>
   Checkpoint::find_latest()
   {
     Found found;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         namespace fs = std::filesystem;
-        // The cycles of every checkpoint piece, newest first.
-        std::set<unsigned int, std::greater<unsigned int>> cycles;
-        std::error_code                                    error;
+        // The points of every checkpoint piece, newest first.
+        std::set<CheckpointPoint> points;
+        std::error_code           error;
         if (fs::is_directory(directory, error))
           for (const auto &entry : fs::directory_iterator(directory, error))
             {
               const auto member =
                 output_series::classify(entry.path().filename().string());
               if (member.checkpoint && !member.partial)
-                cycles.insert(*member.cycle);
+                points.insert(point_of(member));
             }
         // A checkpoint without its state file is one whose writing was
         // stopped (its state is written last): it is passed over with a
@@ -222,31 +265,39 @@ namespace signorini
         // or refused if no intact one is left.
         std::vector<std::string> faults;
         CheckpointManifest       manifest;
-        for (const unsigned int cycle : cycles)
+        CheckpointPoint          intact;
+        for (auto point = points.rbegin(); point != points.rend(); ++point)
           {
-            const std::string name = state_file(cycle);
+            const std::string name = state_file(*point);
             std::ifstream     in(name, std::ios::binary);
             if (!in)
               {
-                std::cout << "Checkpoint of cycle " << cycle
-                          << " incomplete (no " << name
+                std::cout << "Checkpoint of " << *point << " incomplete (no "
+                          << name
                           << "; the run stopped while writing it): passed over"
                           << std::endl;
                 continue;
               }
             std::string fault = manifest.read(
               std::string(std::istreambuf_iterator<char>(in), {}));
+            const CheckpointPoint held{manifest.cycle, manifest.step};
             if (!fault.empty())
               fault = name + ": " + fault;
-            else if (manifest.cycle != cycle)
-              fault = name + ": damaged (it holds the checkpoint of cycle " +
-                      std::to_string(manifest.cycle) + ")";
+            else if (!(held == *point))
+              {
+                std::ostringstream text;
+                text << name << ": damaged (it holds the checkpoint of " << held
+                     << ")";
+                fault = text.str();
+              }
             else
               fault = manifest.verify_pieces(directory);
             if (fault.empty())
               {
                 found.exists = true;
-                found.cycle  = cycle;
+                found.cycle  = point->cycle;
+                found.step   = point->step ? *point->step : 0;
+                intact       = *point;
                 break;
               }
             faults.push_back(fault);
@@ -255,14 +306,14 @@ namespace signorini
           {
             for (const auto &fault : faults)
               std::cerr << "signorini: warning: " << fault
-                        << "; resuming from the checkpoint of cycle "
-                        << found.cycle << " instead" << std::endl;
+                        << "; resuming from the checkpoint of " << intact
+                        << " instead" << std::endl;
             const std::string difference =
               manifest.parameters == parameter_text ?
                 "" :
                 first_difference(manifest.parameters, parameter_text);
             if (!difference.empty())
-              found.error = state_file(found.cycle) +
+              found.error = state_file(intact) +
                             ": written by a different parameter set (" +
                             difference +
                             "); run without --resume to start afresh";
@@ -284,7 +335,10 @@ namespace signorini
     found_state = found.state;
     if (!found.exists)
       return {};
-    return found.cycle;
+    return CheckpointPoint{found.cycle,
+                           found.step > 0 ?
+                             std::optional<unsigned int>(found.step) :
+                             std::nullopt};
   }
 
   const std::string &
@@ -294,8 +348,8 @@ namespace signorini
   }
 
   void
-  Checkpoint::write_state(const unsigned int cycle,
-                          const std::string &state) const
+  Checkpoint::write_state(const CheckpointPoint &point,
+                          const std::string     &state) const
   {
     // Each process reads a slice of every mesh piece for its checksum;
     // process 0 joins the slices' checksums.
@@ -305,7 +359,7 @@ namespace signorini
       Utilities::MPI::n_mpi_processes(mpi_communicator);
     std::vector<std::pair<std::string, std::uint64_t>> pieces;
     if (rank == 0)
-      for (const auto &name : mesh_pieces(cycle))
+      for (const auto &name : mesh_pieces(point))
         pieces.emplace_back(name, size_of(directory + "/" + name));
     pieces = Utilities::MPI::broadcast(mpi_communicator, pieces, 0);
     std::vector<std::pair<std::uint32_t, std::uint64_t>> slices;
@@ -346,25 +400,25 @@ namespace signorini
             }
           checksums.push_back({pieces[i].first, checksum});
         }
-      write_manifest(cycle, state, checksums);
+      write_manifest(point, state, checksums);
     });
   }
 
   void
-  Checkpoint::write_state_file(const unsigned int cycle,
-                               const std::string &state) const
+  Checkpoint::write_state_file(const CheckpointPoint &point,
+                               const std::string     &state) const
   {
     std::vector<CheckpointManifest::Piece> pieces;
-    for (const auto &name : mesh_pieces(cycle))
+    for (const auto &name : mesh_pieces(point))
       pieces.push_back({name, checksum_of_file(directory + "/" + name)});
-    write_manifest(cycle, state, pieces);
+    write_manifest(point, state, pieces);
   }
 
   void
-  Checkpoint::check_mesh_pieces(const unsigned int cycle,
-                                const std::string &save_failure) const
+  Checkpoint::check_mesh_pieces(const CheckpointPoint &point,
+                                const std::string     &save_failure) const
   {
-    const auto  pieces = mesh_pieces(cycle);
+    const auto  pieces = mesh_pieces(point);
     std::string fault;
     // A write that reached the file-size limit was cut there.
     struct rlimit limit;
@@ -377,14 +431,13 @@ namespace signorini
     // One that found the file system full was cut short.
     if (fault.empty() && file_system_full(directory))
       fault =
-        "cannot write '" + mesh_file(cycle) + "*': " + std::strerror(ENOSPC);
+        "cannot write '" + mesh_file(point) + "*': " + std::strerror(ENOSPC);
     // The pieces deal.II and p4est write; a directory in the place of one
     // failed its write and may have kept others from being written.
     std::vector<std::string> names;
     for (const std::string suffix :
          {".mesh", ".mesh.info", ".mesh_fixed.data", ".mesh_variable.data"})
-      names.push_back("checkpoint-" + Utilities::int_to_string(cycle, 2) +
-                      suffix);
+      names.push_back("checkpoint-" + point.suffix() + suffix);
     for (const auto &name : names)
       {
         std::error_code error;
@@ -399,7 +452,7 @@ namespace signorini
         fault = "cannot write '" + directory + "/" + name + "'" +
                 (save_failure.empty() ? "" : ": " + save_failure);
     if (fault.empty() && !save_failure.empty())
-      fault = "cannot write '" + mesh_file(cycle) + "': " + save_failure;
+      fault = "cannot write '" + mesh_file(point) + "': " + save_failure;
     if (fault.empty())
       return;
     std::error_code error;
@@ -410,16 +463,17 @@ namespace signorini
 
   void
   Checkpoint::write_manifest(
-    const unsigned int                            cycle,
+    const CheckpointPoint                        &point,
     const std::string                            &state,
     const std::vector<CheckpointManifest::Piece> &pieces) const
   {
     CheckpointManifest manifest;
-    manifest.cycle      = cycle;
+    manifest.cycle      = point.cycle;
+    manifest.step       = point.step;
     manifest.parameters = parameter_text;
     manifest.state      = state;
     manifest.pieces     = pieces;
-    write_atomically(state_file(cycle),
+    write_atomically(state_file(point),
                      [&](std::ostream &out) { out << manifest.text(); });
     // The new checkpoint is complete: the older ones go.
     namespace fs = std::filesystem;
@@ -429,7 +483,9 @@ namespace signorini
       {
         const auto member =
           output_series::classify(entry.path().filename().string());
-        if (member.checkpoint && *member.cycle != cycle)
+        // (A newer one may be being written: on one process this runs in
+        // the background while the next load step's mesh is saved.)
+        if (member.checkpoint && point_of(member) < point)
           older.push_back(entry.path().string());
       }
     for (const auto &name : older)
@@ -440,18 +496,18 @@ namespace signorini
   Checkpoint::remove_incomplete() const
   {
     namespace fs = std::filesystem;
-    std::error_code        error;
-    std::set<unsigned int> cycles;
+    std::error_code           error;
+    std::set<CheckpointPoint> points;
     for (const auto &entry : fs::directory_iterator(directory, error))
       {
         const auto member =
           output_series::classify(entry.path().filename().string());
         if (member.checkpoint)
-          cycles.insert(*member.cycle);
+          points.insert(point_of(member));
       }
-    for (const unsigned int cycle : cycles)
-      if (!fs::exists(state_file(cycle), error))
-        for (const auto &name : mesh_pieces(cycle))
+    for (const auto &point : points)
+      if (!fs::exists(state_file(point), error))
+        for (const auto &name : mesh_pieces(point))
           fs::remove(directory + "/" + name, error);
   }
 } // namespace signorini

@@ -78,6 +78,14 @@ namespace signorini
                *stop == '\0';
       }
 
+      /** Whether the next line starts with "KEY ". */
+      bool
+      next_is(const std::string &key) const
+      {
+        return text.compare(position, key.size() + 1, key + " ") == 0 &&
+               position + key.size() + 1 <= end;
+      }
+
       /** "KEY SIZE\n", SIZE bytes and '\n'. */
       bool
       block(const std::string &key, std::string &bytes)
@@ -162,6 +170,10 @@ namespace signorini
   {
     std::string result = manifest_magic;
     result += "cycle " + std::to_string(cycle) + "\n";
+    // Only a checkpoint within a cycle has a step line: one after a cycle
+    // is as before load steps had checkpoints.
+    if (step)
+      result += "step " + std::to_string(*step) + "\n";
     result += "pieces " + std::to_string(pieces.size()) + "\n";
     for (const auto &piece : pieces)
       result += "piece " + piece.name + " " +
@@ -210,12 +222,16 @@ namespace signorini
 
     ManifestReader reader(text, size - trailer_size);
     std::string    line;
-    std::uint64_t  saved_cycle = 0, n_pieces = 0;
+    std::uint64_t  saved_cycle = 0, saved_step = 0, n_pieces = 0;
     if (!reader.line(line) || line + "\n" != manifest_magic ||
-        !reader.number("cycle", saved_cycle) ||
+        !reader.number("cycle", saved_cycle))
+      return "not a checkpoint this signorini can read";
+    const bool has_step = reader.next_is("step");
+    if ((has_step && !reader.number("step", saved_step)) ||
         !reader.number("pieces", n_pieces) || n_pieces > 1000)
       return "not a checkpoint this signorini can read";
     cycle = saved_cycle;
+    step  = has_step ? std::optional<unsigned int>(saved_step) : std::nullopt;
     pieces.clear();
     for (std::uint64_t i = 0; i < n_pieces; ++i)
       {
@@ -246,8 +262,9 @@ namespace signorini
         struct stat       status;
         if (::stat(path.c_str(), &status) != 0)
           return path + ": missing (" + std::strerror(errno) +
-                 "), a piece of the checkpoint of cycle " +
-                 std::to_string(cycle);
+                 "), a piece of the checkpoint of " +
+                 (step ? "step " + std::to_string(*step) + " of " : "") +
+                 "cycle " + std::to_string(cycle);
         const std::uint64_t size = status.st_size;
         if (size < piece.checksum.size)
           return path + ": truncated (" + std::to_string(size) + " of " +

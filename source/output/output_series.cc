@@ -76,6 +76,7 @@ namespace signorini
           owned                    = rest == ".vtu" || rest == ".pvtu" ||
                   (piece && piece->second == ".vtu");
           member.history = owned;
+          member.step    = n->first;
         }
       else if (const auto n = cycle_file("solution-"))
         {
@@ -94,12 +95,19 @@ namespace signorini
       else if (const auto n = cycle_file("checkpoint-"))
         {
           member.cycle = n->first;
+          // After a load step within the cycle: "-SSS" before the ending.
+          std::string rest = n->second;
+          if (const auto step = numbered(rest, "-", 3))
+            {
+              member.step = step->first;
+              rest        = step->second;
+            }
           for (const char *ending : {".state",
                                      ".mesh",
                                      ".mesh.info",
                                      ".mesh_fixed.data",
                                      ".mesh_variable.data"})
-            owned = owned || n->second == ending;
+            owned = owned || rest == ending;
           member.checkpoint = owned;
         }
       if (!owned)
@@ -111,7 +119,8 @@ namespace signorini
     std::vector<std::string>
     remove_stale_files(const std::string                 &directory,
                        const std::optional<unsigned int> &resumed_cycle,
-                       const std::optional<unsigned int> &history_cycle)
+                       const std::optional<unsigned int> &history_cycle,
+                       const std::optional<unsigned int> &resumed_step)
     {
       namespace fs = std::filesystem;
       std::vector<std::string> removed;
@@ -127,16 +136,30 @@ namespace signorini
           if (!member.owned)
             continue;
           bool keep = false;
-          if (resumed_cycle && !member.partial)
+          if (resumed_cycle && !member.partial && !resumed_step)
             {
               if (member.history)
                 keep = history_cycle && *history_cycle <= *resumed_cycle;
               else if (!member.cycle)
                 keep = true; // rewritten from the checkpoint right away
               else if (member.checkpoint)
-                keep = *member.cycle == *resumed_cycle;
+                keep = *member.cycle == *resumed_cycle && !member.step;
               else
                 keep = *member.cycle <= *resumed_cycle;
+            }
+          else if (resumed_cycle && !member.partial)
+            {
+              // Within cycle k, after step s: its finished steps stay.
+              if (member.history)
+                keep = history_cycle && *history_cycle == *resumed_cycle &&
+                       (!member.step || *member.step <= *resumed_step);
+              else if (!member.cycle)
+                keep = true;
+              else if (member.checkpoint)
+                keep = *member.cycle == *resumed_cycle &&
+                       member.step == resumed_step;
+              else
+                keep = *member.cycle < *resumed_cycle;
             }
           if (keep)
             continue;

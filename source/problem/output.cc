@@ -543,8 +543,8 @@ namespace signorini
                        "history-" + Utilities::int_to_string(step, 3),
                        1));
     // The rows so far: a run that stops at a later step keeps them.
+    // (Launched by solve_history() with the step's checkpoint.)
     write_records();
-    background_writer.launch();
   }
 
   template void

@@ -11,6 +11,7 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <boost/serialization/version.hpp>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -23,22 +24,25 @@ namespace signorini
   namespace
   {
     /** What a run needs, besides the mesh and the vectors attached to it,
-     * to continue after the cycle of a checkpoint. */
-    struct State
+     * to continue after the cycle or the load step of a checkpoint. */
+    struct CheckpointState
     {
       double    run_time = 0.;
       RunRecord record;
       /** The tables as they were after the cycle, rewritten on resume. */
       std::map<std::string, std::string> files;
       /** Meshes that are not saved (simplex meshes refined globally): the
-       * vectors in dof order. */
-      std::vector<double> solution, pressure;
+       * vectors in dof order; the shear tractions only after a load step
+       * with friction (version 1). */
+      std::vector<double> solution, pressure, tangential;
 
       template <class Archive>
       void
-      serialize(Archive &archive, const unsigned int)
+      serialize(Archive &archive, const unsigned int version)
       {
         archive &run_time &record &files &solution &pressure;
+        if (version > 0)
+          archive &tangential;
       }
     };
 
@@ -49,9 +53,14 @@ namespace signorini
                                              "force_displacement.csv",
                                              "history.pvd"};
   } // namespace
+} // namespace signorini
 
+BOOST_CLASS_VERSION(signorini::CheckpointState, 1)
+
+namespace signorini
+{
   template <int dim>
-  std::optional<unsigned int>
+  std::optional<CheckpointPoint>
   ContactProblem<dim>::start_output(const bool resume)
   {
     const std::string &directory = parameters.output.directory;
@@ -82,7 +91,7 @@ namespace signorini
     auto found = std::make_unique<Checkpoint>(directory,
                                               parameters.text,
                                               mpi_communicator);
-    const std::optional<unsigned int> resumed =
+    const std::optional<CheckpointPoint> resumed =
       resume ? found->find_latest() : std::nullopt;
     checkpoint = std::move(found);
     if (resume && !resumed)
@@ -95,9 +104,11 @@ namespace signorini
       if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
         return;
       // The files of the load steps are the final cycle's.
-      output_series::remove_stale_files(directory,
-                                        resumed,
-                                        parameters.refinement.n_cycles - 1);
+      output_series::remove_stale_files(
+        directory,
+        resumed ? std::optional<unsigned int>(resumed->cycle) : std::nullopt,
+        parameters.refinement.n_cycles - 1,
+        resumed ? resumed->step : std::nullopt);
     });
     write_obstacle_and_parameters();
     return resumed;
@@ -105,11 +116,11 @@ namespace signorini
 
   template <int dim>
   void
-  ContactProblem<dim>::restore_checkpoint(const unsigned int cycle,
-                                          double            &run_time)
+  ContactProblem<dim>::restore_checkpoint(const CheckpointPoint &point,
+                                          double                &run_time)
   {
     const std::string &directory = parameters.output.directory;
-    State              state;
+    CheckpointState    state;
     try
       {
         std::istringstream              in(checkpoint->state());
@@ -118,7 +129,7 @@ namespace signorini
       }
     catch (const std::exception &error)
       {
-        throw InputError::at(checkpoint->state_file(cycle),
+        throw InputError::at(checkpoint->state_file(point),
                              std::string("cannot be read: ") + error.what());
       }
     record = state.record;
@@ -131,9 +142,11 @@ namespace signorini
                          [&](std::ostream &out) { out << text; });
     });
 
-    pcout << "Resuming after cycle " << cycle << " from "
-          << checkpoint->state_file(cycle) << std::endl;
-    if (cycle + 1 >= parameters.refinement.n_cycles)
+    pcout << "Resuming after " << (point.step ? "load step " : "")
+          << (point.step ? std::to_string(*point.step) + " of " : "")
+          << "cycle " << point.cycle << " from "
+          << checkpoint->state_file(point) << std::endl;
+    if (!point.step && point.cycle + 1 >= parameters.refinement.n_cycles)
       {
         pcout << "All " << parameters.refinement.n_cycles
               << " cycles were finished already" << std::endl;
@@ -142,41 +155,49 @@ namespace signorini
 
     TimerOutput::Scope t(timer, "Setup: resume");
     const auto        &owned_dofs = discretisation.locally_owned_dofs();
-    VectorType         owned_solution, owned_pressure;
+    VectorType         owned_solution, owned_pressure, owned_tangential;
+    // After a load step with friction, the shear tractions too: the next
+    // step's active set and multipliers start from them.
+    const bool                shear   = point.step && law->path_dependent();
+    std::vector<VectorType *> vectors = {&owned_solution, &owned_pressure};
+    if (shear)
+      vectors.push_back(&owned_tangential);
     if (discretisation.saves_mesh())
       try
         {
-          discretisation.load(checkpoint->mesh_file(cycle),
-                              {&owned_solution, &owned_pressure},
+          discretisation.load(checkpoint->mesh_file(point),
+                              vectors,
                               estimated_error_per_cell);
         }
       catch (const ExceptionBase &error)
         {
-          throw InputError::at(checkpoint->mesh_file(cycle),
+          throw InputError::at(checkpoint->mesh_file(point),
                                "cannot be loaded: " + one_line(error));
         }
     else
       {
         // Cycle k's mesh is the initial one refined k times, with the same
         // numbering.
-        discretisation.refine_globally(cycle);
-        if (state.solution.size() != discretisation.dof_handler().n_dofs())
-          throw InputError::at(checkpoint->state_file(cycle),
-                               "the checkpoint does not fit the mesh");
-        owned_solution.reinit(owned_dofs, mpi_communicator);
-        owned_pressure.reinit(owned_dofs, mpi_communicator);
-        for (const auto i : owned_dofs)
+        discretisation.refine_globally(point.cycle);
+        const std::vector<const std::vector<double> *> values = {
+          &state.solution, &state.pressure, &state.tangential};
+        for (unsigned int v = 0; v < vectors.size(); ++v)
           {
-            owned_solution(i) = state.solution[i];
-            owned_pressure(i) = state.pressure[i];
+            if (values[v]->size() != discretisation.dof_handler().n_dofs())
+              throw InputError::at(checkpoint->state_file(point),
+                                   "the checkpoint does not fit the mesh");
+            vectors[v]->reinit(owned_dofs, mpi_communicator);
+            for (const auto i : owned_dofs)
+              (*vectors[v])(i) = (*values[v])[i];
+            vectors[v]->compress(VectorOperation::insert);
           }
-        owned_solution.compress(VectorOperation::insert);
-        owned_pressure.compress(VectorOperation::insert);
       }
     setup_system();
     solution = owned_solution;
     pressure = owned_pressure;
-    if (!discretisation.saves_mesh())
+    if (shear)
+      newton.restore_tangential_traction(owned_tangential);
+    if (!discretisation.saves_mesh() && !point.step)
       estimate_error();
   }
 
@@ -194,20 +215,25 @@ namespace signorini
 
   template <int dim>
   void
-  ContactProblem<dim>::save_checkpoint(const unsigned int cycle,
-                                       const double       run_time)
+  ContactProblem<dim>::save_checkpoint(const CheckpointPoint &point,
+                                       const double           run_time)
   {
     if (!writes_checkpoints())
       return;
     TimerOutput::Scope t(timer, "Output: checkpoint");
-    State              state;
+    CheckpointState    state;
+    // After a load step with friction, the shear tractions from which the
+    // next step starts (restore_checkpoint()).
+    std::vector<const VectorType *> vectors = {&solution, &pressure};
+    if (point.step && law->path_dependent())
+      vectors.push_back(&newton.tangential_traction());
     if (discretisation.saves_mesh())
       {
         std::string failure;
         try
           {
-            discretisation.save(checkpoint->mesh_file(cycle),
-                                {&solution, &pressure},
+            discretisation.save(checkpoint->mesh_file(point),
+                                vectors,
                                 estimated_error_per_cell);
           }
         catch (const ExceptionBase &error)
@@ -223,19 +249,22 @@ namespace signorini
         MPI_Barrier(mpi_communicator);
         write_collectively(mpi_communicator, [&]() {
           if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-            checkpoint->check_mesh_pieces(cycle, failure);
+            checkpoint->check_mesh_pieces(point, failure);
           else if (!failure.empty())
             throw std::runtime_error("cannot write '" +
-                                     checkpoint->mesh_file(cycle) +
+                                     checkpoint->mesh_file(point) +
                                      "': " + failure);
         });
       }
     else
-      for (const auto i : discretisation.locally_owned_dofs())
-        {
-          state.solution.push_back(solution(i));
-          state.pressure.push_back(pressure(i));
-        }
+      {
+        const std::vector<std::vector<double> *> values = {&state.solution,
+                                                           &state.pressure,
+                                                           &state.tangential};
+        for (unsigned int v = 0; v < vectors.size(); ++v)
+          for (const auto i : discretisation.locally_owned_dofs())
+            values[v]->push_back((*vectors[v])(i));
+      }
 
     state.run_time = run_time;
     state.record   = record;
@@ -258,11 +287,11 @@ namespace signorini
       }
     if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
       // After the cycle's files, which the background writer writes.
-      background_writer.add([this, cycle, text = out.str()]() {
-        checkpoint->write_state_file(cycle, text);
+      background_writer.add([this, point, text = out.str()]() {
+        checkpoint->write_state_file(point, text);
       });
     else
-      checkpoint->write_state(cycle, out.str());
+      checkpoint->write_state(point, out.str());
   }
 
   template <int dim>
@@ -289,22 +318,22 @@ namespace signorini
     checkpoint->remove_incomplete();
   }
 
-  template std::optional<unsigned int>
+  template std::optional<CheckpointPoint>
   ContactProblem<2>::start_output(bool);
-  template std::optional<unsigned int>
+  template std::optional<CheckpointPoint>
   ContactProblem<3>::start_output(bool);
   template void
-  ContactProblem<2>::restore_checkpoint(unsigned int, double &);
+  ContactProblem<2>::restore_checkpoint(const CheckpointPoint &, double &);
   template void
-  ContactProblem<3>::restore_checkpoint(unsigned int, double &);
+  ContactProblem<3>::restore_checkpoint(const CheckpointPoint &, double &);
   template bool
   ContactProblem<2>::writes_checkpoints() const;
   template bool
   ContactProblem<3>::writes_checkpoints() const;
   template void
-  ContactProblem<2>::save_checkpoint(unsigned int, double);
+  ContactProblem<2>::save_checkpoint(const CheckpointPoint &, double);
   template void
-  ContactProblem<3>::save_checkpoint(unsigned int, double);
+  ContactProblem<3>::save_checkpoint(const CheckpointPoint &, double);
   template void
   ContactProblem<2>::tidy_output() const;
   template void

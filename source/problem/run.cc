@@ -69,7 +69,12 @@ namespace signorini
         catch (Interrupted &stop)
           {
             stop.finished_cycle = finished_cycle;
-            stop.resumable      = stop.finished_cycle && writes_checkpoints();
+            if (finished_step &&
+                (!finished_cycle || finished_step->cycle > *finished_cycle))
+              stop.finished_step =
+                std::make_pair(*finished_step->step, finished_step->cycle);
+            stop.resumable = (stop.finished_cycle || stop.finished_step) &&
+                             writes_checkpoints();
             throw;
           }
       }
@@ -79,14 +84,7 @@ namespace signorini
   void
   ContactProblem<dim>::run_cycles(const bool resume)
   {
-    // Wall time on the slowest process.
-    const auto now = [this]() {
-      MPI_Barrier(mpi_communicator);
-      return std::chrono::duration<double>(
-               std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-    };
-    double run_time = 0., start = now();
+    double run_time = 0., start = wall_time();
     // The entries of t alone (the obstacles' displacements, the traction
     // resultant) at every step, before anything is written; the functions
     // of the points too are checked where they are evaluated.
@@ -155,45 +153,59 @@ namespace signorini
         !warning.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "signorini: warning: " << warning << std::endl;
-    run_time += now() - start;
+    run_time += wall_time() - start;
     const auto resumed = start_output(resume);
     if (resumed)
       {
         restore_checkpoint(*resumed, run_time);
-        finished_cycle = resumed;
+        if (resumed->step)
+          {
+            finished_step = resumed;
+            if (resumed->cycle > 0)
+              finished_cycle = resumed->cycle - 1;
+          }
+        else
+          finished_cycle = resumed->cycle;
       }
-    const unsigned int first_cycle = resumed ? *resumed + 1 : 0;
+    // After a checkpoint within a cycle, the cycle continues on its mesh
+    // with the next load step.
+    const unsigned int first_cycle =
+      resumed ? resumed->cycle + (resumed->step ? 0 : 1) : 0;
     for (unsigned int cycle = first_cycle;
          cycle < parameters.refinement.n_cycles;
          ++cycle)
       {
+        const bool continued = resumed && resumed->step && cycle == first_cycle;
         // A signal stops the run here, after the last cycle's files, or
         // between Newton steps (NewtonDriver::iterate).
         interruption::check(mpi_communicator);
         CycleTimings timings;
         timings.cycle = cycle;
-        start         = now();
-        if (cycle > 0)
+        start         = wall_time();
+        if (cycle > 0 && !continued)
           refine_grid();
         pcout << "Cycle " << cycle << ": "
               << discretisation.triangulation().n_global_active_cells()
               << " cells, " << discretisation.dof_handler().n_dofs() << " dofs"
               << std::endl;
-        const double solve_start = now();
+        const double solve_start = wall_time();
         if (history.stepped())
-          // Every step but the last with its results; the last one is
-          // finished as a cycle without a history.
-          solve_history(cycle);
+          // Every step but the last with its results and checkpoints; the
+          // last one is finished as a cycle without a history.
+          solve_history(cycle,
+                        continued ? *resumed->step + 1 : 1,
+                        run_time,
+                        start);
         else
           solve(cycle);
-        timings.contact_solve = now() - solve_start;
+        timings.contact_solve = wall_time() - solve_start;
         // The system is built anew on the next mesh: free it before the
         // error estimate and the output's patches take their memory. (The
         // timing table solves once more on this mesh.)
         if (!parameters.output.timing_table)
           elastic_operator->release();
         estimate_error();
-        run_time += now() - start;
+        run_time += wall_time() - start;
         timings.run_time = run_time;
         record_statistics(cycle, history.n_steps);
         output_results(cycle);
@@ -212,7 +224,7 @@ namespace signorini
         // The solution file's arrays are free (unless the background
         // writer still holds them) before the checkpoint packs the mesh.
         release_free_memory();
-        save_checkpoint(cycle, run_time);
+        save_checkpoint({cycle, {}}, run_time);
         background_writer.launch();
         release_free_memory();
         finished_cycle = cycle;
@@ -247,89 +259,22 @@ namespace signorini
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::wall_time() const
+  {
+    MPI_Barrier(mpi_communicator);
+    return std::chrono::duration<double>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::solve(const unsigned int cycle)
   {
     elastic_operator->assemble_load();
     newton.start_cycle();
     formulation->solve(newton, cycle);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::solve_history(const unsigned int cycle)
-  {
-    const auto &history = parameters.load_history;
-    // Each cycle replays the whole history on its mesh, from zero: a
-    // resumed run, which continues with the next cycle, repeats the
-    // uninterrupted one.
-    solution = 0.;
-    pressure = 0.;
-    for (unsigned int step = 1; step <= history.n_steps; ++step)
-      {
-        // A signal stops the run between steps too (or between Newton
-        // steps); the files of the finished steps stay.
-        if (step > 1)
-          interruption::check(mpi_communicator);
-        const double t = history.time(step);
-        pcout << "  Step " << step << " of " << history.n_steps << ": t = " << t
-              << std::endl;
-        start_load_step(step);
-        try
-          {
-            solve(cycle);
-          }
-        catch (const SolverFailure &failure)
-          {
-            throw SolverFailure(failure.status,
-                                std::string(failure.what()) + " (load step " +
-                                  std::to_string(step) + " of " +
-                                  std::to_string(history.n_steps) +
-                                  ", t = " + number(t) + ")");
-          }
-        if (step == history.n_steps)
-          break;
-        estimate_error();
-        record_statistics(cycle, step);
-        output_step(cycle, step);
-        if (parameters.contact.acts())
-          check_boundary_penetration(discretisation,
-                                     contact_surface,
-                                     solution,
-                                     cycle);
-      }
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::start_load_step(const unsigned int step)
-  {
-    TimerOutput::Scope t(timer, "Setup: load step");
-    const double       time = parameters.load_history.time(step);
-    // The loads and the Dirichlet data of the step, and the obstacles where
-    // it puts them.
-    set_time(time);
-    // The displacement of the last step (zero on the first) with the new
-    // Dirichlet values: the Newton iteration's start.
-    VectorType owned(discretisation.locally_owned_dofs(), mpi_communicator);
-    owned = solution;
-    discretisation.constraints().distribute(owned);
-    solution = owned;
-    // The elastic system holds the old constraints, loads and gaps: built
-    // anew by the next solve.
-    elastic_operator->invalidate();
-    // The contact nodes (their gaps, and which obstacle each faces) of the
-    // moved obstacles.
-    try
-      {
-        contact_surface.setup(discretisation);
-      }
-    catch (const InputError &error)
-      {
-        throw InputError(error.entry,
-                         std::string(error.what()) + " at t = " + number(time));
-      }
-    newton.start_step();
   }
 
   template <int dim>
@@ -382,18 +327,14 @@ namespace signorini
   ContactProblem<2>::set_time(double);
   template void
   ContactProblem<3>::set_time(double);
+  template double
+  ContactProblem<2>::wall_time() const;
+  template double
+  ContactProblem<3>::wall_time() const;
   template void
   ContactProblem<2>::solve(unsigned int);
   template void
   ContactProblem<3>::solve(unsigned int);
-  template void
-  ContactProblem<2>::solve_history(unsigned int);
-  template void
-  ContactProblem<3>::solve_history(unsigned int);
-  template void
-  ContactProblem<2>::start_load_step(unsigned int);
-  template void
-  ContactProblem<3>::start_load_step(unsigned int);
   template void
   ContactProblem<2>::estimate_error();
   template void

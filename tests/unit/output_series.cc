@@ -36,6 +36,8 @@ namespace
       std::cout << ", cycle " << *member.cycle;
     if (member.checkpoint)
       std::cout << ", checkpoint";
+    if (member.checkpoint && member.step)
+      std::cout << ", step " << *member.step;
     if (member.partial)
       std::cout << ", partial";
     if (member.history)
@@ -329,6 +331,63 @@ main()
   checks::expect("every series file removed",
                  removed_history({}) == 7 &&
                    !fs::exists(directory / "force_displacement.csv"));
+
+  // Checkpoints after load steps within a cycle: checkpoint-CC-SSS.*.
+  std::cout << "classify, checkpoints of load steps:\n";
+  unsigned int n_step_wrong = 0;
+  for (const auto &name : {"checkpoint-02-001.state",
+                           "checkpoint-02-001.mesh",
+                           "checkpoint-02-003.mesh_variable.data",
+                           "checkpoint-10-1000.mesh.info.part"})
+    {
+      print(name);
+      const auto member = output_series::classify(name);
+      n_step_wrong +=
+        !member.owned || !member.checkpoint || !member.cycle || !member.step;
+    }
+  for (const auto &name :
+       {"checkpoint-02-01.state", "checkpoint-02-.state", "checkpoint-02-001"})
+    {
+      print(name);
+      n_step_wrong += output_series::classify(name).owned;
+    }
+  checks::expect("step checkpoints owned with their cycle and step; other "
+                 "names not owned",
+                 n_step_wrong == 0);
+
+  // A run of cycles 0..2 stopped after step 2 of cycle 2 (its final one),
+  // with a stale checkpoint of step 1 and one of cycle 1 beside it.
+  std::cout << "remove_stale_files, resumed after step 2 of cycle 2:\n";
+  populate_history();
+  for (const auto &name : {"checkpoint-01.state",
+                           "checkpoint-02-001.state",
+                           "checkpoint-02-002.state",
+                           "checkpoint-02-002.mesh"})
+    std::ofstream(directory / name) << name << '\n';
+  {
+    const auto removed =
+      output_series::remove_stale_files(directory.string(), 2u, 2u, 2u);
+    std::cout << "  removed (" << removed.size() << "):";
+    for (const auto &name : removed)
+      std::cout << ' ' << name;
+    std::cout << '\n';
+    std::vector<std::string> left;
+    for (const auto &entry : fs::directory_iterator(directory))
+      left.push_back(entry.path().filename().string());
+    std::sort(left.begin(), left.end());
+    std::cout << "  left (" << left.size() << "):";
+    for (const auto &name : left)
+      std::cout << ' ' << name;
+    std::cout << '\n';
+    checks::expect("the cycle's solution file, later steps' files, other "
+                   "checkpoints and the temporary removed",
+                   removed ==
+                     std::vector<std::string>{"checkpoint-01.state",
+                                              "checkpoint-02-001.state",
+                                              "history-003.vtu.part",
+                                              "history-1000.vtu",
+                                              "solution-02.vtu"});
+  }
 
   fs::remove_all(directory);
   std::cout << "temporary directory removed: "

@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace signorini
 {
@@ -54,7 +55,8 @@ namespace signorini
     status() const;
 
     /** The line reported for the parameter file @p file: "interrupted by
-     * SIGTERM after cycle 3; resume with --resume FILE". */
+     * SIGTERM after cycle 3; resume with --resume FILE" (or "after load
+     * step 2 of cycle 4"). */
     std::string
     message(const std::string &file) const;
 
@@ -62,7 +64,11 @@ namespace signorini
     int signal;
     /** The last cycle whose files are complete, if any. */
     std::optional<unsigned int> finished_cycle;
-    /** Whether finished_cycle has a checkpoint to resume from. */
+    /** The last load step (step, cycle) whose files are complete within a
+     * later cycle, if any. */
+    std::optional<std::pair<unsigned int, unsigned int>> finished_step;
+    /** Whether the last finished cycle or step has a checkpoint to resume
+     * from. */
     bool resumable = false;
   };
 } // namespace signorini

@@ -76,6 +76,13 @@ namespace signorini
     void
     start_step();
 
+    /** Restores the obstacle's tangential traction @p traction (locally
+     * owned, as tangential_traction() was after a load step) from a
+     * checkpoint: the next step's active set and multipliers start from it.
+     * Call after reinit(); nothing without friction. */
+    void
+    restore_tangential_traction(const VectorType &traction);
+
     /** Puts the nodes in contact that touch or penetrate, and sets the
      * others' states by the law, from the current displacement and
      * pressure. */

@@ -2,6 +2,7 @@
 #define signorini_output_checkpoint_manifest_h
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,10 +51,14 @@ namespace signorini
       FileChecksum checksum;
     };
 
-    unsigned int       cycle = 0;
-    std::vector<Piece> pieces;
-    std::string        parameters;
-    std::string        state;
+    unsigned int cycle = 0;
+    /** The load step after which the checkpoint was written within its
+     * cycle (a line "step N" after the cycle's); none for one written after
+     * the cycle. */
+    std::optional<unsigned int> step;
+    std::vector<Piece>          pieces;
+    std::string                 parameters;
+    std::string                 state;
 
     /** The text of the state file. */
     std::string

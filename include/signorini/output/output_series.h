@@ -10,7 +10,8 @@ namespace signorini
   /**
    * The files a run owns in its output directory: the series
    * solution-CC.vtu, solution-CC.pvtu and their pieces solution-CC.RRRR.vtu,
-   * contact_pressure-CC.csv and checkpoint-CC.* for cycles CC, and
+   * contact_pressure-CC.csv and checkpoint-CC.* for cycles CC (and
+   * checkpoint-CC-SSS.* after load step SSS of cycle CC), and
    * solution.pvd, statistics.csv and timings.csv; of a load history
    * force_displacement.csv and force_displacement.gnuplot, and the final
    * cycle's history-SSS.vtu, history-SSS.pvtu, their pieces
@@ -30,6 +31,9 @@ namespace signorini
       std::optional<unsigned int> cycle;
       /** A checkpoint file. */
       bool checkpoint = false;
+      /** The load step of a checkpoint written within its cycle
+       * (checkpoint-CC-SSS.*) or of a step file (history-SSS.*). */
+      std::optional<unsigned int> step;
       /** A temporary file of an interrupted write. */
       bool partial = false;
       /** A file of the final cycle's load steps (history-SSS.*,
@@ -49,14 +53,18 @@ namespace signorini
      * of cycles 0..k and the checkpoint of cycle k, and removes those of
      * later cycles, other checkpoints and temporaries. The files of the
      * load steps are those of cycle @p history_cycle (the final one; none:
-     * of no cycle kept). Files outside the series are never touched; a
-     * missing directory is fine. Returns the names removed; throws
-     * std::runtime_error if one cannot be removed.
+     * of no cycle kept). A run resumed after load step s (@p resumed_step)
+     * within cycle k keeps the files of cycles 0..k-1, the checkpoint of
+     * step s of cycle k and, if k is the final cycle, its step files
+     * 1..s. Files outside the series are never touched; a missing directory
+     * is fine. Returns the names removed; throws std::runtime_error if one
+     * cannot be removed.
      */
     std::vector<std::string>
     remove_stale_files(const std::string                 &directory,
                        const std::optional<unsigned int> &resumed_cycle,
-                       const std::optional<unsigned int> &history_cycle = {});
+                       const std::optional<unsigned int> &history_cycle = {},
+                       const std::optional<unsigned int> &resumed_step  = {});
 
     /**
      * The regular files of @p directory that a run would remove or overwrite

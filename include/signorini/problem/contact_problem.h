@@ -49,8 +49,8 @@ namespace signorini
                    const MPI_Comm         mpi_communicator);
 
     /** All cycles; throws SolverFailure or InputError. With @p resume,
-     * continues after the cycle of the newest checkpoint in the output
-     * directory (from cycle 0 if there is none). */
+     * continues after the cycle or the load step of the newest checkpoint
+     * in the output directory (from cycle 0 if there is none). */
     void
     run(const bool resume = false);
 
@@ -65,25 +65,36 @@ namespace signorini
      * Throws InputError where one is not finite. */
     void
     set_time(const double t);
+    /** Wall time [s] on the slowest process (collective). */
+    double
+    wall_time() const;
     /** The contact problem of one cycle (of one load step) by the
      * formulation. */
     void
     solve(const unsigned int cycle);
-    /** Cycle @p cycle's load history from zero displacement and pressure:
-     * each step but the last solved, estimated, recorded and written
-     * (output_step()), then the last step solved; run_cycles() finishes
-     * it as a cycle without a history. */
     void
-    solve_history(const unsigned int cycle);
+    estimate_error();
+    void
+    refine_grid();
+
+    // load_steps.cc
+    /** Cycle @p cycle's load history from step @p first_step on: from zero
+     * displacement and pressure if it is 1, else from the state of the
+     * step before (restored from its checkpoint). Each step but the last is
+     * solved, estimated, recorded, written (output_step()) and
+     * checkpointed, with the run time @p run_time at the cycle's start
+     * (wall time @p start) added to its own; then the last step is solved,
+     * and run_cycles() finishes it as a cycle without a history. */
+    void
+    solve_history(const unsigned int cycle,
+                  const unsigned int first_step,
+                  const double       run_time,
+                  const double       start);
     /** Starts load step @p step of the history: the loads, constraints,
      * obstacles and contact surface at its time, and NewtonDriver's
      * start_step(). */
     void
     start_load_step(const unsigned int step);
-    void
-    estimate_error();
-    void
-    refine_grid();
 
     // setup.cc
     /** The operator, contact surface and vectors of the current mesh. */
@@ -111,7 +122,9 @@ namespace signorini
     void
     output_results(const unsigned int cycle);
     /** After load step @p step (not the last) of cycle @p cycle: in the
-     * final cycle the step's history file, and the records so far. */
+     * final cycle the step's history file, and the records so far (on one
+     * process queued for the background writer, which the caller
+     * launches). */
     void
     output_step(const unsigned int cycle, const unsigned int step);
     /** The current solution's fields as a VTU piece of this process. */
@@ -132,24 +145,27 @@ namespace signorini
     // resume.cc
     /** Takes over the output directory (removing what an earlier run left
      * that this run does not continue) and writes the obstacle and the
-     * parameters. Returns the cycle of the checkpoint to resume after, on
-     * @p resume, if there is one. */
-    std::optional<unsigned int>
+     * parameters. Returns the point (a cycle, or a load step within one) of
+     * the checkpoint to resume after, on @p resume, if there is one. */
+    std::optional<CheckpointPoint>
     start_output(const bool resume);
     /** Restores the run record, the tables, the mesh and the state after
-     * cycle @p cycle from its checkpoint, adding its run time to
-     * @p run_time. */
+     * @p point from its checkpoint, adding its run time to @p run_time:
+     * after a cycle the mesh to refine, with the last step's displacement,
+     * pressure and error indicators; after a load step the cycle's mesh
+     * with what the next step starts from (the displacement, the pressure,
+     * and with friction the shear tractions). */
     void
-    restore_checkpoint(const unsigned int cycle, double &run_time);
+    restore_checkpoint(const CheckpointPoint &point, double &run_time);
     /** Whether this run writes checkpoints (Output/Checkpoint, and a mesh
      * that is not remeshed by Gmsh). */
     bool
     writes_checkpoints() const;
-    /** Writes the checkpoint of cycle @p cycle (Output/Checkpoint); throws
-     * std::runtime_error naming the file and the reason if a piece is not
-     * written whole. */
+    /** Writes the checkpoint at @p point, after a cycle or a load step
+     * (Output/Checkpoint); throws std::runtime_error naming the file and the
+     * reason if a piece is not written whole. */
     void
-    save_checkpoint(const unsigned int cycle, const double run_time);
+    save_checkpoint(const CheckpointPoint &point, const double run_time);
     /** After a failure or an interruption, once nothing is written any
      * more: removes the temporaries of unfinished writes and the pieces of
      * an incomplete checkpoint (process 0). */
@@ -189,7 +205,10 @@ namespace signorini
     RunRecord record;
     /** The last cycle whose results and checkpoint are written, if any. */
     std::optional<unsigned int> finished_cycle;
-    std::unique_ptr<Checkpoint> checkpoint;
+    /** The last load step within a cycle whose results and checkpoint are
+     * written, if any. */
+    std::optional<CheckpointPoint> finished_step;
+    std::unique_ptr<Checkpoint>    checkpoint;
     /** Last, so that it is destroyed first: the files being written in the
      * background refer to the members above. */
     BackgroundWriter background_writer;
