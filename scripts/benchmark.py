@@ -5,16 +5,22 @@ contact solve over that of one linear elasticity solve on the same mesh with
 the same linear solver, both measured in the same run (`Output/Timing table`),
 and the peak memory. Medians over repeated runs; the machine is shared.
 
-    scripts/benchmark [--repeat N] [--2d | --3d]   (default 3 runs per scene)
+    scripts/benchmark [--repeat N] [--2d | --3d | --friction-3d]
+                      (default: all three parts, 3 runs per scene)
 
 The 3D part runs the 3D scenes on one and two processes (`mpirun`), the
 indentation scene at more than a million dofs as a whole run, deal.II's
 step-42 (built from the documentation package, made elastic) against it on
 two processes, every shipped scene for its output share, and the 2D Hertz
-scene at more than 200k dofs on one and two processes.
+scene at more than 200k dofs on one and two processes. The friction-3d
+part runs the indentation scene past a million dofs on two processes
+(matrix-free) with Coulomb friction and without, in turn: per cycle the
+contact solve of each over one linear solve, their quotient, and the memory
+per dof.
 
 Prints the tables and rewrites the sections of doc/performance.md between
-<!-- begin benchmark --> and <!-- end benchmark --> (and benchmark-3d).
+<!-- begin benchmark --> and <!-- end benchmark --> (and benchmark-3d,
+benchmark-friction-3d).
 Runs go to build/benchmark/.
 
 For the test suite only: with SIGNORINI_SMOKE=FOLDER (see scripts/common.py)
@@ -413,13 +419,13 @@ def three_d(repeat):
 
 
 def main():
-    repeat, parts = 1 if common.SMOKE else 3, {"2d", "3d"}
+    repeat, parts = 1 if common.SMOKE else 3, {"2d", "3d", "friction-3d"}
     arguments = sys.argv[1:]
     while arguments:
         if arguments[0] == "--repeat" and len(arguments) > 1:
             repeat = int(arguments[1])
             arguments = arguments[2:]
-        elif arguments[0] in ("--2d", "--3d"):
+        elif arguments[0] in ("--2d", "--3d", "--friction-3d"):
             parts = {arguments[0][2:]}
             arguments = arguments[1:]
         else:
@@ -432,6 +438,8 @@ def main():
         sections["benchmark-3d"] = three_d(repeat)
     if "2d" in parts:
         sections["benchmark"] = two_d(repeat)
+    if "friction-3d" in parts:
+        sections["benchmark-friction-3d"] = friction_3d(repeat)
     common.replace_sections(common.output_file("doc/performance.md"),
                             sections)
 
@@ -477,6 +485,45 @@ def two_d(repeat):
                  "per cycle each one's contact solve over one linear solve on "
                  "its mesh, and their quotient:\n\n" + friction)
     return text
+
+
+def friction_3d(repeat):
+    """The indentation scene past a million dofs, matrix-free on two
+    processes, with Coulomb friction (mu = 0.3) and without, run in turn;
+    returns the section of doc/performance.md."""
+    large = with_overrides(LARGE, MATRIX_FREE)
+    if common.SMOKE:
+        large = dict(MATRIX_FREE)
+    friction = with_overrides(large,
+                              {"Obstacle": {"Friction coefficient": "0.3"}})
+    measured = measure_in_turn(
+        [("indentation_frictionless", "prm/sphere_indentation.prm", large, 2),
+         ("indentation_friction", "prm/sphere_indentation.prm", friction, 2)],
+        repeat)
+    plain, rubbing = (measured["indentation_frictionless"],
+                      measured["indentation_friction"])
+    table = friction_table(plain, rubbing)
+    per_dof = [1024. * rows[-1]["peak_memory"] / rows[-1]["dofs"]
+               for rows in (plain, rubbing)]
+    seconds = [sum(r["contact_solve"] for r in rows)
+               for rows in (plain, rubbing)]
+    print("\nFriction in 3D, matrix-free, 2 processes\n\n" + table +
+          "\nmemory per dof: %.2f kB frictionless, %.2f kB with friction; "
+          "contact solves %.1f s and %.1f s" %
+          (per_dof[0], per_dof[1], seconds[0], seconds[1]))
+    return ("`sphere_indentation.prm` refined to %s dofs (7 cycles) on two "
+            "processes, matrix-free, with Coulomb friction (mu = 0.3) and "
+            "without, %s, the two in turn: per cycle each one's contact "
+            "solve over one linear solve on its mesh (the friction's GMRES "
+            "against the frictionless CG, both with the same multigrid), "
+            "and their quotient:\n\n%s\n"
+            "All cycles' contact solves: %.1f s frictionless, %.1f s with "
+            "friction. Peak memory on the final mesh: **%.2f kB per dof** "
+            "frictionless, **%.2f kB per dof** with friction (two "
+            "processes together).\n" %
+            ("{:,}".format(int(rubbing[-1]["dofs"])),
+             "one run" if repeat == 1 else "medians of %d runs" % repeat,
+             table, seconds[0], seconds[1], per_dof[0], per_dof[1]))
 
 
 def friction_table(frictionless, frictional):

@@ -593,9 +593,11 @@ namespace signorini
   template <int dim>
   void
   ElasticLevelOperator<dim>::assemble_matrix(
-    TrilinosWrappers::SparseMatrix &matrix,
-    const std::vector<NodalBlock>  &springs) const
+    TrilinosWrappers::SparseMatrix        &matrix,
+    const AffineConstraints<double> *const with_contact) const
   {
+    const AffineConstraints<double> &lines =
+      with_contact ? *with_contact : *constraints;
     const auto    &dofs = *dof_handler;
     const MPI_Comm comm = dofs.get_communicator();
     IndexSet       relevant;
@@ -604,11 +606,8 @@ namespace signorini
                                                dofs.locally_owned_dofs(),
                                                relevant,
                                                comm);
-    DoFTools::make_sparsity_pattern(dofs,
-                                    sparsity,
-                                    *constraints,
-                                    false,
-                                    Utilities::MPI::this_mpi_process(comm));
+    DoFTools::make_sparsity_pattern(
+      dofs, sparsity, lines, false, Utilities::MPI::this_mpi_process(comm));
     sparsity.compress();
     matrix.reinit(sparsity);
     if (by_vertices)
@@ -627,17 +626,12 @@ namespace signorini
                 for (unsigned int j = 0; j < n; ++j)
                   cell_matrix(i, j) = K[position[j] * n + position[i]];
               cell->get_dof_indices(indices);
-              constraints->distribute_local_to_global(cell_matrix,
-                                                      indices,
-                                                      matrix);
+              lines.distribute_local_to_global(cell_matrix, indices, matrix);
             }
       }
     else
-      MatrixFreeTools::compute_matrix(matrix_free,
-                                      *constraints,
-                                      matrix,
-                                      &ElasticLevelOperator::apply_cell,
-                                      this);
+      MatrixFreeTools::compute_matrix(
+        matrix_free, lines, matrix, &ElasticLevelOperator::apply_cell, this);
     // The contact of a coarse level: nodal blocks, no held lines.
     for (const auto &[dofs_of, stiffness] : symmetric_blocks)
       for (unsigned int a = 0; a < dim; ++a)
@@ -646,14 +640,6 @@ namespace signorini
             matrix.add(partitioner->local_to_global(dofs_of[a]),
                        partitioner->local_to_global(dofs_of[b]),
                        stiffness[a][b]);
-    // Springs at the dofs that are not constrained (held ones included).
-    for (const auto &[dofs_of, stiffness] : springs)
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          if (stiffness[a][b] != 0. &&
-              !constraints->is_constrained(dofs_of[a]) &&
-              !constraints->is_constrained(dofs_of[b]))
-            matrix.add(dofs_of[a], dofs_of[b], stiffness[a][b]);
     matrix.compress(VectorOperation::add);
   }
 

@@ -165,8 +165,9 @@ namespace signorini
 
   template <int dim>
   void
-  ElasticMultigrid<dim>::update(const VectorType &diagonal,
-                                const VectorType &off_diagonal)
+  ElasticMultigrid<dim>::update(const VectorType                &diagonal,
+                                const VectorType                &off_diagonal,
+                                const AffineConstraints<double> &fine_contact)
   {
     const unsigned int     top   = operators.max_level();
     constexpr unsigned int n_off = dim == 2 ? 1 : 3;
@@ -232,14 +233,11 @@ namespace signorini
       }
 
     // The coarsest level's factorisation.
-    // One level, the fine one: it holds its contact as lines, which its
-    // matrix leaves out; the factorisation gets them as the springs the
-    // coarser levels have (without them a body that only the obstacle
-    // holds has a singular matrix).
-    operators[0]->assemble_matrix(
-      coarse_matrix,
-      top == 0 ? nodal_blocks(diagonal, off_diagonal) :
-                 std::vector<typename LevelOperator::NodalBlock>());
+    // One level, the fine one: its factorisation is of the fine operator
+    // with its contact's lines (without them a body held only by the
+    // obstacle has a singular matrix).
+    operators[0]->assemble_matrix(coarse_matrix,
+                                  top == 0 ? &fine_contact : nullptr);
     direct = std::make_unique<TrilinosWrappers::SolverDirect>(coarse_control);
     try
       {

@@ -281,7 +281,7 @@ namespace signorini
                       });
       }
     fine->set_contact(held, blocks);
-    multigrid.update(diagonal, off_diagonal);
+    multigrid.update(diagonal, off_diagonal, constraints);
     contact_for   = additions.key;
     contact_ready = true;
   }

@@ -106,9 +106,11 @@ resume_case() {
   status=$?
   echo "  stopped: exit status $status"
   grep "^signorini" killed.err | sed -E 's/(step|cycle) [0-9]+/\1 N/g'
+  # The newest checkpoint is a step's (checkpoint-CC-SSS sorts before
+  # checkpoint-CC; an older one may still be there, being removed).
   echo "  stopped within a cycle's history:" \
-    $(ls out/checkpoint-*-[0-9][0-9][0-9].state > /dev/null 2>&1 &&
-      ! ls out/checkpoint-0[0-9].state > /dev/null 2>&1 && echo yes || echo no)
+    $(ls out/checkpoint-*.state 2> /dev/null | sort | tail -n 1 |
+      grep -qE -- '-[0-9]{2}-[0-9]{3}\.state$' && echo yes || echo no)
   "${resume[@]}" "$SIGNORINI" --resume scene.prm > resume.log 2> resume.err
   echo "  resumed: exit status $?"
   cat resume.err

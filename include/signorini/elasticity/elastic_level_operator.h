@@ -139,13 +139,14 @@ namespace signorini
     const VectorType &
     diagonal() const;
 
-    /** The operator as a Trilinos matrix (the coarse level's), its held
-     * lines left out, with the @p springs (global indices) added at the
-     * dofs that are not constrained: where the fine level is the only one,
-     * its contact as the coarser levels have it. */
+    /** The operator as a Trilinos matrix (the coarse level's), without
+     * the held lines; or, with @p with_contact (the constraints of
+     * reinit() with the held lines), the fine operator's symmetric part
+     * itself: where the fine level is the only one. */
     void
-    assemble_matrix(dealii::TrilinosWrappers::SparseMatrix &matrix,
-                    const std::vector<NodalBlock>          &springs = {}) const;
+    assemble_matrix(
+      dealii::TrilinosWrappers::SparseMatrix  &matrix,
+      const dealii::AffineConstraints<double> *with_contact = nullptr) const;
 
     void
     initialize_dof_vector(VectorType &vector) const;

@@ -62,10 +62,14 @@ namespace signorini
      * vertex, @p off_diagonal k n_x n_y (2D), or k n_x n_y, k n_y n_z,
      * k n_x n_z (3D) at its components; then the smoothers and the coarse
      * factorisation anew (also when the fine level's contact changed).
-     * Throws SolverFailure if the coarse matrix is singular.
+     * @p fine_contact: the fine level's constraints with its contact's
+     * lines, which the factorisation takes where the fine level is the
+     * only one. Throws SolverFailure if the coarse matrix is singular.
      */
     void
-    update(const VectorType &diagonal, const VectorType &off_diagonal);
+    update(const VectorType                        &diagonal,
+           const VectorType                        &off_diagonal,
+           const dealii::AffineConstraints<double> &fine_contact);
 
     /** One V-cycle: dst = M^-1 src. */
     void
