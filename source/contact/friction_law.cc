@@ -86,7 +86,10 @@ namespace signorini
   {
     if (!(traction.sigma > 0) || !frictional(node))
       return FrictionlessLaw<dim>::state(node, traction);
-    return traction.tangential.norm() < bound(node, traction.sigma) ?
+    // A node at its bound to round-off (a slipping node at a step's start,
+    // its shear mu p from the same nodal forces as p) slips.
+    return traction.tangential.norm() <
+               (1. - 1e-8) * bound(node, traction.bound_sigma) ?
              NodeState::stick :
              NodeState::slip;
   }
@@ -98,7 +101,7 @@ namespace signorini
   {
     if (!frictional(node))
       return std::nullopt;
-    const double b    = bound(node, traction.sigma);
+    const double b    = bound(node, traction.bound_sigma);
     const double zeta = traction.tangential.norm();
     if (!(traction.sigma > 0) || zeta == 0.)
       return Tensor<1, dim>();
@@ -131,7 +134,7 @@ namespace signorini
     else if (node.state == NodeState::slip && traction.shear_weight == 0.)
       add_regularised_slip_equations(node, traction, equations);
     else if (node.state == NodeState::slip && dim == 3 &&
-             traction.shear.norm() >= 0.99 * bound(node, traction.sigma))
+             traction.shear.norm() >= 0.99 * bound(node, traction.bound_sigma))
       add_slip_equations(node, traction, equations);
     else if (node.state == NodeState::slip)
       {
@@ -169,7 +172,7 @@ namespace signorini
     const Tensor<1, dim> z      = traction.tangential / zeta;
     const double         mu     = coefficient[node.obstacle];
     const bool           tresca = slip_bound[node.obstacle] > 0;
-    const double         size   = node.mass * bound(node, traction.sigma);
+    const double         size   = node.mass * bound(node, traction.bound_sigma);
     const double         turn   = size * traction.stiffness / zeta;
     for (const auto &t : node.tangents)
       if (!held_by_supports(node, t))
@@ -210,7 +213,7 @@ namespace signorini
     constexpr unsigned int n      = dim - 1;
     const double           mu     = coefficient[node.obstacle];
     const bool             tresca = slip_bound[node.obstacle] > 0;
-    const double           b      = bound(node, traction.sigma);
+    const double           b      = bound(node, traction.bound_sigma);
     const double           m      = node.mass;
     const double           c      = traction.stiffness;
     Tensor<1, n>           zeta, q;

@@ -147,9 +147,11 @@ namespace signorini
     const double      gap      = surface.deformed_gap(node, solution);
     const double      pressure = contact_pressure(node.scalar_dof);
     traction.pressure          = pressure;
-    traction.sigma             = for_state ?
-                                   formulation.state_pressure(i, node, gap, pressure) :
-                                   formulation.residual_pressure(i, node, gap, pressure);
+    traction.bound_sigma =
+      formulation.residual_pressure(i, node, gap, pressure);
+    traction.sigma = for_state ?
+                       formulation.state_pressure(i, node, gap, pressure) :
+                       traction.bound_sigma;
     if (law.path_dependent())
       {
         Tensor<1, dim> q;

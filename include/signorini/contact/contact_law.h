@@ -59,13 +59,19 @@ namespace signorini
    * load step), with the contact pressure p, q, s and the formulation's
    * dzeta/ds = -c [MPa/mm] for a law that linearises zeta, and dzeta/dq
    * (1 for the active set; 0 for the penalty's zeta = -s / epsilon, a
-   * regularised stick).
+   * regularised stick). The friction bound takes bound_sigma, the
+   * augmented pressure without the round-off margin by which sigma
+   * decides contact (a gap counts as negative only beyond it): the one the
+   * residual takes, so that a node's state and its slip equation bound its
+   * shear alike (with sigma's margin, a node at its bound stuck by the
+   * residual and slipped by the state, and the iteration stalled).
    */
   template <int dim>
   struct NodeTraction
   {
-    double                 sigma    = 0.;
-    double                 pressure = 0.;
+    double                 sigma       = 0.;
+    double                 bound_sigma = 0.;
+    double                 pressure    = 0.;
     dealii::Tensor<1, dim> tangential;
     dealii::Tensor<1, dim> shear;
     dealii::Tensor<1, dim> slip;
