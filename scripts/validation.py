@@ -230,6 +230,64 @@ plot mu * p(x) w l lw 2 lc rgb 'gray' t 'mu p, closed form', \
                  rows)
 
 
+def spence():
+    """prm/spence_sphere_axisymmetric.prm: the stick radius over the load
+    steps of the last cycle against Spence's kappa a, and the shear and mu p
+    of the last step's contact nodes."""
+    kappa, mu = 0.90, 0.3
+    data = run("spence_sphere_axisymmetric",
+               "prm/spence_sphere_axisymmetric.prm", {})
+    last_cycle = data[-1]["cycle"]
+    steps = [r for r in data if r["cycle"] == last_cycle]
+    # The cell at the final contact edge, from the last step's nodes.
+    profile = os.path.join(WORK, "spence_sphere_axisymmetric",
+                           "contact_pressure-%02d.csv" % last_cycle)
+    with open(profile) as table_file:
+        radii = sorted(float(line.split(",")[0])
+                       for line in table_file.readlines()[1:])
+    a_end = steps[-1]["contact_width"]
+    cell = min((r2 - r1 for r1, r2 in zip(radii, radii[1:])
+                if r1 < a_end and r2 > 0.5 * a_end), default=float("nan"))
+    rows = []
+    for r in steps:
+        if r["step"] % 10 and r["step"] not in (1, 2, 5) and r is not steps[-1]:
+            continue
+        a = r["contact_width"]
+        c = r["stick_width"]
+        rows.append(["%d" % r["step"], "%.4f" % a, "%.4f" % c,
+                     "%.3f" % (c / a if a > 0 else 0.),
+                     "%+.2f" % ((c - kappa * a) / cell),
+                     "%d" % r["iterations"]])
+    series = write_data("spence_steps", steps, ["step", "contact_width",
+                                                "stick_width"])
+    gnuplot("""
+set terminal pngcairo size 1100,440 font ',11'
+set output '%s/spence_sphere-stick.png'
+set datafile separator whitespace
+set multiplot layout 1,2 title "Spence's frictional indentation (mu = 0.3, nu = 0.3), cycle %d (%d dofs)"
+set xlabel 'load step (a grows by 4 %% a step)'
+set ylabel 'stick radius c / contact radius a'
+set yrange [0:1.05]
+set grid
+set key bottom right
+plot %.3f w l lw 2 lc rgb 'black' t 'Spence: kappa = %.2f', \
+     '%s' u 1:($2 > 0 ? $3 / $2 : 1/0) w lp pt 7 ps 0.6 lc 1 t 'c / a'
+set datafile separator ','
+set xlabel 'r [mm]'
+set ylabel 'traction [MPa]'
+set yrange [*:*]
+set key top right
+set xrange [0:1.3 * %.10g]
+plot '%s' every ::1 u 1:($6 >= 2 ? %.3f * abs($3) : 1/0) w l lw 2 lc rgb 'gray' t 'mu p', \
+     '%s' every ::1 u 1:($6 == 2 ? abs($11) : 1/0) w p pt 7 ps 0.6 lc 1 t 'shear, sticking nodes', \
+     '%s' every ::1 u 1:($6 == 3 ? abs($11) : 1/0) w p pt 5 ps 0.6 lc 2 t 'shear, slipping nodes'
+unset multiplot
+""" % (DOC_OUT, last_cycle, steps[-1]["dofs"], kappa, kappa, series, a_end,
+       profile, mu, profile, profile))
+    return table(["step", "a [mm]", "c [mm]", "c/a", "(c - 0.90 a) / cell",
+                  "iterations"], rows)
+
+
 def study_mesh(triangles, nx, ny):
     mesh = os.path.join(WORK, "beam-%d.msh" % triangles)
     if not os.path.exists(mesh):
@@ -339,7 +397,7 @@ def main():
     if "--overkill" in sys.argv[1:]:
         overkill()
     sections = {"hertz": hertz(), "energy": energy(),
-                "cattaneo_mindlin": cattaneo_mindlin()}
+                "cattaneo_mindlin": cattaneo_mindlin(), "spence": spence()}
     sections.update(study_tables())
     replace_sections(common.output_file("doc/validation.md"), sections)
     print("scripts/validation: %s/validation.md and the charts regenerated" %
