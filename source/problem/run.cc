@@ -304,13 +304,22 @@ namespace signorini
     TimerOutput::Scope t(timer, "Refine: mesh and transfer");
     // The next cycle starts from this one's displacement and active set
     // when the mesh adaptation carries them over (not across a remesh).
-    auto carried =
-      discretisation.refine(estimated_error_per_cell, {&solution, &pressure});
+    // With friction the obstacle's shear traction too: the stick and slip
+    // states start from it where the last mesh left them (not where a load
+    // history starts again from zero).
+    const bool shear = newton.tangential_traction().size() > 0 &&
+                       !parameters.load_history.stepped();
+    std::vector<const VectorType *> vectors = {&solution, &pressure};
+    if (shear)
+      vectors.push_back(&newton.tangential_traction());
+    auto carried = discretisation.refine(estimated_error_per_cell, vectors);
     setup_system();
     if (!carried.empty())
       {
         solution = carried[0];
         pressure = carried[1];
+        if (shear)
+          newton.restore_tangential_traction(carried[2]);
         newton.carry_over();
       }
   }

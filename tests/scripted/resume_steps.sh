@@ -42,15 +42,16 @@ scene_of() {
   fi
 }
 
-# compare_runs SAME_COUNT [TOLERANCE]: the tables of out/ against those of
-# reference/, to TOLERANCE (1e-8 unless given); with SAME_COUNT = no
-# (resumed on another number of processes) all but the iteration counts,
-# and not the series, whose files differ (a .pvtu with a piece per process,
-# or one .vtu).
+# compare_runs SAME_COUNT [TOLERANCE] [ITERATIONS]: the tables of out/
+# against those of reference/, to TOLERANCE (1e-8 unless given); with
+# SAME_COUNT = no (resumed on another number of processes) all but the
+# iteration counts, and not the series, whose files differ (a .pvtu with a
+# piece per process, or one .vtu); with ITERATIONS = no, the series but not
+# the iteration counts.
 compare_runs() {
   local table tolerance=${2:-1e-8}
   for table in statistics.csv force_displacement.csv $(cd reference && ls contact_pressure-*.csv 2> /dev/null); do
-    if [ "$1" = no ] && [ $table = statistics.csv ]; then
+    if { [ "$1" = no ] || [ "${3:-yes}" = no ]; } && [ $table = statistics.csv ]; then
       cut -d, -f6 --complement out/$table > out.csv
       cut -d, -f6 --complement reference/$table > reference.csv
       echo "  $table equals the uninterrupted run's to $tolerance but for the iteration counts:" \
@@ -117,7 +118,11 @@ resume_case() {
   echo "  resumed after a load step within a cycle:" \
     $(grep -qE "^Resuming after load step [0-9]+ of cycle [2-9] from out/checkpoint-0[2-9]-[0-9]{3}\.state" resume.log &&
       echo yes || echo no)
-  compare_runs $([ "$killed_on" = "$resumed_on" ] && echo yes || echo no) $tolerance
+  # On several processes the resumed run's partition is not the
+  # uninterrupted one's: the loose linear solves of the Newton steps, and
+  # with friction where they turn tight, may differ in iteration counts.
+  compare_runs $([ "$killed_on" = "$resumed_on" ] && echo yes || echo no) $tolerance \
+    $([ "$resumed_on" -gt 1 ] && echo no || echo yes)
 }
 
 CYCLES=5 resume_case default KILL 1 1

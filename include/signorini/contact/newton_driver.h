@@ -185,6 +185,10 @@ namespace signorini
     VectorType                 contact_residual;
     /** See tangential_traction(); ghosted. */
     VectorType tangential_pressure;
+    /** Whether tangential_pressure was restored (from a checkpoint, or
+     * carried to a new mesh), so that initialize_active_set() starts from
+     * it rather than from the nodal forces. */
+    bool shear_carried = false;
     /** Systems that were not symmetric so far: each is assembled anew. */
     std::size_t nonsymmetric_systems = 0;
     /** See carry_over(). */
