@@ -32,8 +32,8 @@ namespace signorini
       /** The tables as they were after the cycle, rewritten on resume. */
       std::map<std::string, std::string> files;
       /** Meshes that are not saved (simplex meshes refined globally): the
-       * vectors in dof order; the shear tractions only after a load step
-       * with friction (version 1). */
+       * vectors in dof order; the shear tractions with friction (version
+       * 1). */
       std::vector<double> solution, pressure, tangential;
 
       template <class Archive>
@@ -156,9 +156,10 @@ namespace signorini
     TimerOutput::Scope t(timer, "Setup: resume");
     const auto        &owned_dofs = discretisation.locally_owned_dofs();
     VectorType         owned_solution, owned_pressure, owned_tangential;
-    // After a load step with friction, the shear tractions too: the next
-    // step's active set and multipliers start from them.
-    const bool                shear   = point.step && law->path_dependent();
+    // With friction, the shear tractions too: the next step's active set
+    // and multipliers start from them, or the next cycle's, which carries
+    // them to its mesh.
+    const bool                shear   = law->path_dependent();
     std::vector<VectorType *> vectors = {&owned_solution, &owned_pressure};
     if (shear)
       vectors.push_back(&owned_tangential);
@@ -222,10 +223,10 @@ namespace signorini
       return;
     TimerOutput::Scope t(timer, "Output: checkpoint");
     CheckpointState    state;
-    // After a load step with friction, the shear tractions from which the
-    // next step starts (restore_checkpoint()).
+    // With friction, the shear tractions from which the next step or the
+    // next cycle starts (restore_checkpoint()).
     std::vector<const VectorType *> vectors = {&solution, &pressure};
-    if (point.step && law->path_dependent())
+    if (law->path_dependent())
       vectors.push_back(&newton.tangential_traction());
     if (discretisation.saves_mesh())
       {
