@@ -127,21 +127,17 @@ namespace signorini
                                             additions.local_changes &&
                                             key.second == assembled_for.second);
         // The additions' constraint lines win over the discretisation's.
-        constraints.clear();
-        constraints.reinit(discretisation.locally_relevant_dofs());
-        additions.add_constraints(constraints);
-        constraints.merge(discretisation.constraints(),
-                          AffineConstraints<double>::left_object_wins);
-        constraints.close();
+        const auto &relevant = discretisation.locally_relevant_dofs();
+        additions.close(constraints,
+                        discretisation.constraints(),
+                        relevant,
+                        false);
         test_constraints.clear();
         if (additions.has_test_weights)
-          {
-            test_constraints.reinit(discretisation.locally_relevant_dofs());
-            additions.add_test_constraints(test_constraints);
-            test_constraints.merge(discretisation.constraints(),
-                                   AffineConstraints<double>::left_object_wins);
-            test_constraints.close();
-          }
+          additions.close(test_constraints,
+                          discretisation.constraints(),
+                          relevant,
+                          true);
         assemble_matrix(additions);
         base_rhs         = system_rhs;
         assembled_for    = key;

@@ -182,36 +182,6 @@ namespace signorini
     coarse.reset();
     direct.reset();
 
-    // A level's contact as the nodal blocks of its diagonal and
-    // off-diagonal vectors. The owned dofs come as whole vertices, dim at a
-    // time.
-    const auto nodal_blocks = [&](const VectorType &level_diagonal,
-                                  const VectorType &level_off) {
-      std::vector<typename LevelOperator::NodalBlock> blocks;
-      const auto &partitioner = *level_diagonal.get_partitioner();
-      for (unsigned int i = 0; i + dim <= level_diagonal.locally_owned_size();
-           i += dim)
-        {
-          typename LevelOperator::NodalBlock block{};
-          bool                               any = false;
-          for (unsigned int a = 0; a < dim; ++a)
-            {
-              block.dofs[a]         = partitioner.local_to_global(i + a);
-              block.stiffness[a][a] = level_diagonal.local_element(i + a);
-              any                   = any || block.stiffness[a][a] != 0.;
-            }
-          for (unsigned int k = 0; k < n_off; ++k)
-            {
-              const double value = level_off.local_element(i + k);
-              block.stiffness[pairs[k][0]][pairs[k][1]] = value;
-              block.stiffness[pairs[k][1]][pairs[k][0]] = value;
-            }
-          if (any)
-            blocks.push_back(block);
-        }
-      return blocks;
-    };
-
     // Restricted from the fine vectors themselves, then level by level.
     VectorType finer_diagonal, finer_off;
     for (unsigned int level = top; level-- > 0;)
@@ -226,16 +196,38 @@ namespace signorini
         transfer.restrict_and_add(level + 1,
                                   level_off,
                                   from_fine ? off_diagonal : finer_off);
-        operators[level]->set_contact({},
-                                      nodal_blocks(level_diagonal, level_off));
+
+        // The owned dofs come as whole vertices, dim at a time.
+        std::vector<typename LevelOperator::NodalBlock> blocks;
+        const auto &partitioner = *level_diagonal.get_partitioner();
+        for (unsigned int i = 0; i + dim <= level_diagonal.locally_owned_size();
+             i += dim)
+          {
+            typename LevelOperator::NodalBlock block{};
+            bool                               any = false;
+            for (unsigned int a = 0; a < dim; ++a)
+              {
+                block.dofs[a]         = partitioner.local_to_global(i + a);
+                block.stiffness[a][a] = level_diagonal.local_element(i + a);
+                any                   = any || block.stiffness[a][a] != 0.;
+              }
+            for (unsigned int k = 0; k < n_off; ++k)
+              {
+                const double value = level_off.local_element(i + k);
+                block.stiffness[pairs[k][0]][pairs[k][1]] = value;
+                block.stiffness[pairs[k][1]][pairs[k][0]] = value;
+              }
+            if (any)
+              blocks.push_back(block);
+          }
+        operators[level]->set_contact({}, blocks);
         finer_diagonal.swap(level_diagonal);
         finer_off.swap(level_off);
       }
 
-    // The coarsest level's factorisation.
-    // One level, the fine one: its factorisation is of the fine operator
-    // with its contact's lines (without them a body held only by the
-    // obstacle has a singular matrix).
+    // The coarsest level's factorisation; where it is the only level, the
+    // fine one's with its contact's lines (without them a body held only
+    // by the obstacle has a singular matrix).
     operators[0]->assemble_matrix(coarse_matrix,
                                   top == 0 ? &fine_contact : nullptr);
     direct = std::make_unique<TrilinosWrappers::SolverDirect>(coarse_control);

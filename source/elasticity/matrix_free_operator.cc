@@ -194,23 +194,15 @@ namespace signorini
     // The additions' constraint lines, closed with the discretisation's
     // constraints as AssembledOperator does; and with their test weights
     // (a slipping node's lines: the equations' side).
-    const auto closed = [&](AffineConstraints<double> &lines,
-                            const bool                 test_weights) {
-      lines.clear();
-      lines.reinit(discretisation.locally_relevant_dofs());
-      if (test_weights)
-        additions.add_test_constraints(lines);
-      else
-        additions.add_constraints(lines);
-      lines.merge(discretisation.constraints(),
-                  AffineConstraints<double>::left_object_wins);
-      lines.close();
-    };
-    closed(constraints, false);
+    const auto &relevant = discretisation.locally_relevant_dofs();
+    additions.close(constraints, discretisation.constraints(), relevant, false);
     local_constraints.reinit(constraints, load_la.get_partitioner());
     AffineConstraints<double> test_constraints;
     if (additions.has_test_weights)
-      closed(test_constraints, true);
+      additions.close(test_constraints,
+                      discretisation.constraints(),
+                      relevant,
+                      true);
 
     const auto &owned = discretisation.locally_owned_dofs();
     std::vector<typename ElasticLevelOperator<dim>::HeldLine> held;

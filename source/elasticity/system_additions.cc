@@ -30,6 +30,23 @@ namespace signorini
       }
   }
 
+  template <int dim>
+  void
+  SystemAdditions<dim>::close(dealii::AffineConstraints<double>       &lines,
+                              const dealii::AffineConstraints<double> &given,
+                              const dealii::IndexSet                  &relevant,
+                              const bool test_weights) const
+  {
+    lines.clear();
+    lines.reinit(relevant);
+    if (test_weights)
+      add_test_constraints(lines);
+    else
+      add_constraints(lines);
+    lines.merge(given, dealii::AffineConstraints<double>::left_object_wins);
+    lines.close();
+  }
+
   template struct SystemAdditions<2>;
   template struct SystemAdditions<3>;
 } // namespace signorini

@@ -1,6 +1,7 @@
 #ifndef signorini_elasticity_system_additions_h
 #define signorini_elasticity_system_additions_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -113,6 +114,16 @@ namespace signorini
      * the equations' side of a Petrov-Galerkin condensation. */
     void
     add_test_constraints(dealii::AffineConstraints<double> &constraints) const;
+
+    /** @p lines anew over the @p relevant dofs: the constraint lines (with
+     * their test weights if @p test_weights) merged with @p given (the
+     * discretisation's hanging-node and Dirichlet constraints; these lines
+     * win), closed. */
+    void
+    close(dealii::AffineConstraints<double>       &lines,
+          const dealii::AffineConstraints<double> &given,
+          const dealii::IndexSet                  &relevant,
+          const bool                               test_weights) const;
   };
 } // namespace signorini
 
