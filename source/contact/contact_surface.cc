@@ -1,4 +1,6 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <signorini/contact/contact_surface.h>
@@ -118,46 +120,76 @@ namespace signorini
     const auto        &owned_dofs  = discretisation.locally_owned_dofs();
     const unsigned int n_obstacles = obstacle_set.size();
 
-    // The vertices of the contact boundary, each once, with their gaps.
-    std::vector<Vertex>                                vertices;
+    // The nodes of the contact boundary, each once, with their gaps: the
+    // vertices, and at degree 2 the mid-nodes of edges and faces (where the
+    // mapping puts them: on a curved boundary's manifold).
+    const auto                          &fe          = discretisation.fe();
+    const auto                          &base        = fe.base_element(0);
+    const unsigned int                   n_cell_dofs = fe.n_dofs_per_cell();
+    FEValues<dim>                        at_nodes(discretisation.mapping(),
+                           fe,
+                           Quadrature<dim>(base.get_unit_support_points()),
+                           update_quadrature_points);
+    std::vector<types::global_dof_index> cell_dofs(n_cell_dofs);
+    std::vector<Vertex>                  vertices;
     std::map<types::global_dof_index, unsigned int>    vertex_index;
     std::optional<std::pair<Point<dim>, unsigned int>> non_finite;
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && ids.count(face->boundary_id()))
-            for (const unsigned int v : face->vertex_indices())
+        {
+          bool mapped = false;
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                ids.count(cell->face(f)->boundary_id()))
               {
-                const auto [at, added] =
-                  vertex_index.emplace(face->vertex_dof_index(v, 0),
-                                       vertices.size());
-                if (added)
+                if (!mapped)
                   {
-                    Vertex vertex;
-                    vertex.position = face->vertex(v);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      {
-                        vertex.dofs[d] = face->vertex_dof_index(v, d);
-                        vertex.free[d] =
-                          !constraints.is_constrained(vertex.dofs[d]);
-                      }
-                    vertex.gaps.resize(n_obstacles);
-                    vertex.normals.resize(n_obstacles);
-                    for (unsigned int k = 0; k < n_obstacles; ++k)
-                      vertex.gaps[k] =
-                        obstacle_set.gap(k, vertex.position, vertex.normals[k]);
-                    vertices.push_back(vertex);
+                    cell->get_dof_indices(cell_dofs);
+                    if (fe.degree > 1)
+                      at_nodes.reinit(cell);
+                    mapped = true;
                   }
-                auto &vertex = vertices[at->second];
-                vertex.boundary_ids.insert(face->boundary_id());
-                // A gap that is not a number where a node can act on it.
-                for (unsigned int k = 0; k < n_obstacles; ++k)
-                  if (!std::isfinite(vertex.gaps[k]) &&
-                      !(free_part(vertex.normals[k], vertex.free) <
-                        fixed_along_normal))
-                    non_finite = {vertex.position, k};
+                for (unsigned int b = 0; b < base.n_dofs_per_cell(); ++b)
+                  {
+                    if (!fe.has_support_on_face(
+                          fe.component_to_system_index(0, b), f))
+                      continue;
+                    const auto [at, added] = vertex_index.emplace(
+                      cell_dofs[fe.component_to_system_index(0, b)],
+                      vertices.size());
+                    if (added)
+                      {
+                        Vertex vertex;
+                        vertex.position = b < cell->n_vertices() ?
+                                            cell->vertex(b) :
+                                            at_nodes.quadrature_point(b);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          {
+                            vertex.dofs[d] =
+                              cell_dofs[fe.component_to_system_index(d, b)];
+                            vertex.free[d] =
+                              !constraints.is_constrained(vertex.dofs[d]);
+                          }
+                        vertex.gaps.resize(n_obstacles);
+                        vertex.normals.resize(n_obstacles);
+                        for (unsigned int k = 0; k < n_obstacles; ++k)
+                          vertex.gaps[k] = obstacle_set.gap(k,
+                                                            vertex.position,
+                                                            vertex.normals[k]);
+                        vertices.push_back(vertex);
+                      }
+                    auto &vertex = vertices[at->second];
+                    vertex.boundary_ids.insert(cell->face(f)->boundary_id());
+                    // A gap that is not a number where a node can act on it.
+                    for (unsigned int k = 0; k < n_obstacles; ++k)
+                      if (!std::isfinite(vertex.gaps[k]) &&
+                          !(free_part(vertex.normals[k], vertex.free) <
+                            fixed_along_normal))
+                        non_finite = {vertex.position, k};
+                  }
               }
+        }
     if (Utilities::MPI::max(non_finite ? 1U : 0U, mpi_communicator) > 0)
       {
         std::optional<InputError> error;

@@ -3,6 +3,8 @@
 
 #include <signorini/contact/contact_surface.h>
 
+#include <optional>
+
 namespace signorini
 {
   using namespace dealii;
@@ -26,10 +28,37 @@ namespace signorini
     FEFaceValues<dim>       fe_face_values(
       discretisation.mapping(),
       fe,
-      discretisation.face_quadrature(),
+      discretisation.contact_face_quadrature(),
       update_values | update_JxW_values | discretisation.weight_flags() |
         (n_obstacles > 1 ? update_quadrature_points | update_normal_vectors :
                                  update_default));
+    // An axisymmetric model of degree 2: the node on the axis has no mass
+    // as an integral of phi_i 2 pi r (its shape function's integral
+    // vanishes exactly), so it would have no pressure. Each Gauss-Lobatto
+    // point stands for its share of the face instead (the points whose
+    // weights add up to it, in order), the annulus that share sweeps: its
+    // weight 2 pi r at the share's middle. Along a straight face that is
+    // the annulus's area, for the axis node pi (L/6)^2, positive.
+    const Quadrature<dim - 1> &rule = discretisation.contact_face_quadrature();
+    std::optional<FEFaceValues<dim>> share_middles;
+    if (fe.degree > 1 && discretisation.axisymmetric())
+      {
+        std::vector<Point<dim - 1>> middles(rule.size());
+        double                      before = 0.;
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            middles[q][0] = before + 0.5 * rule.weight(q);
+            before += rule.weight(q);
+          }
+        share_middles.emplace(discretisation.mapping(),
+                              fe,
+                              Quadrature<dim - 1>(middles),
+                              discretisation.weight_flags());
+      }
+    const auto weight = [&](const unsigned int q) {
+      return share_middles ? discretisation.weight(*share_middles, q) :
+                             discretisation.weight(fe_face_values, q);
+    };
     std::vector<Vector<double>> cell_mass(n_obstacles, Vector<double>(n));
     std::vector<types::global_dof_index> dof_indices(n);
     for (const auto &cell :
@@ -40,16 +69,16 @@ namespace signorini
               ids.count(cell->face(f)->boundary_id()))
             {
               fe_face_values.reinit(cell, f);
+              if (share_middles)
+                share_middles->reinit(cell, f);
               if (n_obstacles == 1)
                 {
                   cell_mass[0] = 0;
                   for (unsigned int i = 0; i < n; ++i)
                     for (const unsigned int q :
                          fe_face_values.quadrature_point_indices())
-                      cell_mass[0](i) +=
-                        fe_face_values.shape_value(i, q) *
-                        fe_face_values.JxW(q) *
-                        discretisation.weight(fe_face_values, q);
+                      cell_mass[0](i) += fe_face_values.shape_value(i, q) *
+                                         fe_face_values.JxW(q) * weight(q);
                 }
               else
                 {
@@ -62,10 +91,8 @@ namespace signorini
                         obstacle_set.facing(fe_face_values.quadrature_point(q),
                                             fe_face_values.normal_vector(q));
                       for (unsigned int i = 0; i < n; ++i)
-                        cell_mass[k](i) +=
-                          fe_face_values.shape_value(i, q) *
-                          fe_face_values.JxW(q) *
-                          discretisation.weight(fe_face_values, q);
+                        cell_mass[k](i) += fe_face_values.shape_value(i, q) *
+                                           fe_face_values.JxW(q) * weight(q);
                     }
                 }
               cell->get_dof_indices(dof_indices);

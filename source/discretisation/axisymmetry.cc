@@ -25,6 +25,27 @@ namespace signorini
                     !constraints.is_constrained(radial))
                   constraints.add_line(radial);
               }
+      // Degree 2: the mid-nodes of the faces that lie on the axis.
+      const auto &fe = dofs.get_fe();
+      if (fe.degree == 1)
+        return;
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+            {
+              bool on_axis = true;
+              for (const unsigned int v : face->vertex_indices())
+                on_axis = on_axis && std::abs(face->vertex(v)[0]) <= tolerance;
+              if (!on_axis)
+                continue;
+              face->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                if (fe.face_system_to_component_index(i).first == 0 &&
+                    relevant_dofs.is_element(face_dofs[i]) &&
+                    !constraints.is_constrained(face_dofs[i]))
+                  constraints.add_line(face_dofs[i]);
+            }
     }
 
     template <int dim>

@@ -1,10 +1,12 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -80,14 +82,30 @@ namespace signorini
     mesh            = mesh_adaptation->create_mesh(coarse_mesh);
 
     const ReferenceCell cell_type = mesh->get_reference_cells()[0];
+    const unsigned int  degree    = geometry.element_degree;
+    if (simplex_cells && degree > 1)
+      throw InputError("Geometry/Element degree",
+                       "is 2, but the mesh has triangles/tetrahedra, which "
+                       "take degree 1 only so far (P2 is not available): "
+                       "use quadrilaterals/hexahedra (Cell type = "
+                       "quadrilateral) for Q2");
     if (simplex_cells)
       element = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
     else
-      element = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
+      element = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
     linear_mapping = &cell_type.template get_default_linear_mapping<dim>();
-    cell_rule      = cell_type.template get_gauss_type_quadrature<dim>(2);
-    face_rule      = cell_type.face_reference_cell(0)
-                  .template get_gauss_type_quadrature<dim - 1>(2);
+    // Degree 2: the cells follow the manifolds of curved boundaries (the
+    // generated shapes' spheres, a .geo's curves) with their mid-nodes.
+    if (degree > 1)
+      curved_mapping = std::make_unique<MappingQ<dim>>(degree);
+    cell_rule = cell_type.template get_gauss_type_quadrature<dim>(degree + 1);
+    face_rule = cell_type.face_reference_cell(0)
+                  .template get_gauss_type_quadrature<dim - 1>(degree + 1);
+    // Q2's contact nodes: lumped on the face's Gauss-Lobatto points, its
+    // nodes (weights 1/6, 4/6, 1/6 along an edge, all positive).
+    contact_face_rule =
+      degree > 1 ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(degree + 1)) :
+                   face_rule;
     setup_dofs();
   }
 
@@ -142,7 +160,7 @@ namespace signorini
     fixed_constraints.merge(hanging_nodes);
     for (const auto &[id, mask] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
-        *linear_mapping,
+        mapping(),
         dofs,
         id,
         *boundary_conditions.prescribed_displacement,
@@ -294,7 +312,33 @@ namespace signorini
   const Mapping<dim> &
   Discretisation<dim>::mapping() const
   {
-    return *linear_mapping;
+    return curved_mapping ? *curved_mapping : *linear_mapping;
+  }
+
+  template <int dim>
+  unsigned int
+  Discretisation<dim>::degree() const
+  {
+    return geometry.element_degree;
+  }
+
+  template <int dim>
+  bool
+  Discretisation<dim>::curved(
+    const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    if (!curved_mapping)
+      return false;
+    if (cell->manifold_id() != numbers::flat_manifold_id)
+      return true;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->manifold_id() != numbers::flat_manifold_id)
+        return true;
+    if (dim == 3)
+      for (unsigned int l = 0; l < cell->n_lines(); ++l)
+        if (cell->line(l)->manifold_id() != numbers::flat_manifold_id)
+          return true;
+    return false;
   }
 
   template <int dim>
@@ -309,6 +353,13 @@ namespace signorini
   Discretisation<dim>::face_quadrature() const
   {
     return face_rule;
+  }
+
+  template <int dim>
+  const Quadrature<dim - 1> &
+  Discretisation<dim>::contact_face_quadrature() const
+  {
+    return contact_face_rule;
   }
 
   template <int dim>

@@ -259,6 +259,15 @@ namespace signorini
                       Patterns::Integer(0, 12),
                       "Global refinements of the coarse mesh before cycle 0 "
                       "(a .geo: Gmsh's sizes divided by 2^k).");
+    prm.declare_entry("Element degree",
+                      entry_text::of(defaults.element_degree),
+                      Patterns::Integer(1, 2),
+                      "Polynomial degree of the displacement: 1 (Q1, P1) or "
+                      "2 (Q2 on quadrilaterals/hexahedra, whose cells follow "
+                      "curved boundaries by a mapping of degree 2; contact "
+                      "at every node of the contact faces, vertices and "
+                      "mid-nodes). Degree 2 takes the assembled operator; "
+                      "triangles/tetrahedra take degree 1 only so far.");
     prm.leave_subsection();
   }
 
@@ -338,6 +347,7 @@ namespace signorini
                                 std::string()));
       }
     initial_refinement = prm.get_integer("Initial refinement");
+    element_degree     = prm.get_integer("Element degree");
     prm.leave_subsection();
   }
 

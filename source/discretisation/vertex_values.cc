@@ -39,44 +39,56 @@ namespace signorini
   VertexValues<dim>::attach(const DoFHandler<dim>                 &dofs,
                             const std::vector<const VectorType *> &vectors)
   {
-    static_assert(GeometryInfo<dim>::vertices_per_cell <= 8,
-                  "a cell's carried vertices are the bits of one byte");
-    // Which vertices each locally owned cell carries.
-    const IndexSet            &owned = dofs.locally_owned_dofs();
+    // Which nodes each locally owned cell carries: a bit per node (its
+    // support point of the base element), in bytes.
+    const auto                &fe      = dofs.get_fe();
+    const unsigned int         n_nodes = fe.base_element(0).n_dofs_per_cell();
+    const unsigned int         n_bytes = (n_nodes + 7) / 8;
+    const IndexSet            &owned   = dofs.locally_owned_dofs();
     std::vector<bool>          taken(owned.n_elements(), false);
     std::vector<unsigned char> carried(
-      dofs.get_triangulation().n_active_cells(), 0);
+      dofs.get_triangulation().n_active_cells() * n_bytes, 0);
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const auto i = cell->vertex_dof_index(v, 0);
-            if (!owned.is_element(i))
-              continue;
-            const auto k = owned.index_within_set(i);
-            if (!taken[k])
-              {
-                taken[k] = true;
-                carried[cell->active_cell_index()] |= 1u << v;
-              }
-          }
+        {
+          cell->get_dof_indices(cell_dofs);
+          for (unsigned int b = 0; b < n_nodes; ++b)
+            {
+              const auto i = cell_dofs[fe.component_to_system_index(0, b)];
+              if (!owned.is_element(i))
+                continue;
+              const auto k = owned.index_within_set(i);
+              if (!taken[k])
+                {
+                  taken[k] = true;
+                  carried[cell->active_cell_index() * n_bytes + b / 8] |=
+                    1u << (b % 8);
+                }
+            }
+        }
 
     auto &mesh = distributed(dofs);
     mesh.register_data_attach(
-      [&dofs, &vectors, carried = std::move(carried)](
+      [&dofs, &vectors, n_nodes, n_bytes, carried = std::move(carried)](
         const CellIterator<dim> &mesh_cell, const auto) {
-        const auto          cell  = dof_cell(dofs, mesh_cell);
-        const unsigned char which = carried[cell->active_cell_index()];
+        const auto           cell = dof_cell(dofs, mesh_cell);
+        const unsigned char *which =
+          &carried[cell->active_cell_index() * n_bytes];
+        const auto                          &fe = dofs.get_fe();
+        std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+        cell->get_dof_indices(cell_dofs);
         std::vector<double> values;
-        for (const unsigned int v : cell->vertex_indices())
-          if (which & (1u << v))
+        for (unsigned int b = 0; b < n_nodes; ++b)
+          if (which[b / 8] & (1u << (b % 8)))
             for (const auto *vector : vectors)
               for (unsigned int d = 0; d < dim; ++d)
-                values.push_back((*vector)(cell->vertex_dof_index(v, d)));
-        std::vector<char> record(1 + values.size() * sizeof(double));
-        record[0] = static_cast<char>(which);
+                values.push_back(
+                  (*vector)(cell_dofs[fe.component_to_system_index(d, b)]));
+        std::vector<char> record(n_bytes + values.size() * sizeof(double));
+        std::memcpy(record.data(), which, n_bytes);
         if (!values.empty())
-          std::memcpy(record.data() + 1,
+          std::memcpy(record.data() + n_bytes,
                       values.data(),
                       values.size() * sizeof(double));
         return record;
@@ -98,8 +110,12 @@ namespace signorini
     for (auto &vector : gathered)
       vector.reinit(owned, relevant, comm);
 
-    auto              &mesh = distributed(dofs);
-    const unsigned int handle =
+    const auto        &fe      = dofs.get_fe();
+    const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+    const unsigned int n_bytes = (n_nodes + 7) / 8;
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    auto                                &mesh = distributed(dofs);
+    const unsigned int                   handle =
       mesh.register_data_attach([](const CellIterator<dim> &,
                                    const auto) { return std::vector<char>(); },
                                 /*returns_variable_size_data=*/true);
@@ -109,18 +125,19 @@ namespace signorini
           const auto,
           const boost::iterator_range<std::vector<char>::const_iterator>
             &record) {
-        const auto          cell  = dof_cell(dofs, mesh_cell);
-        const unsigned char which = static_cast<unsigned char>(*record.begin());
-        const char         *read  = &*record.begin() + 1;
-        for (const unsigned int v : cell->vertex_indices())
-          if (which & (1u << v))
+        const auto  cell  = dof_cell(dofs, mesh_cell);
+        const char *which = &*record.begin();
+        const char *read  = which + n_bytes;
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int b = 0; b < n_nodes; ++b)
+          if (static_cast<unsigned char>(which[b / 8]) & (1u << (b % 8)))
             for (auto &vector : gathered)
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   double value;
                   std::memcpy(&value, read, sizeof(value));
                   read += sizeof(value);
-                  vector(cell->vertex_dof_index(v, d)) = value;
+                  vector(cell_dofs[fe.component_to_system_index(d, b)]) = value;
                 }
       });
 

@@ -24,7 +24,10 @@ namespace signorini
     , loads(loads)
     , parameters(parameters)
     , timer(timer)
-    , cell_stiffness(material)
+    , cell_stiffness(material,
+                     [&discretisation](const auto &cell) {
+                       return discretisation.curved(cell);
+                     })
     , material(material)
     , linear_system_solver(parameters, remedies, pcout, timer)
   {

@@ -137,8 +137,10 @@ namespace signorini
   }
 
   template <int dim>
-  CellStiffness<dim>::CellStiffness(const Material &material)
+  CellStiffness<dim>::CellStiffness(const Material   &material,
+                                    const CurvedCell &curved)
     : material(material)
+    , curved(curved)
     , scales_linearly(dim == 3 || material.axisymmetric())
   {
   }
@@ -227,6 +229,8 @@ namespace signorini
   CellStiffness<dim>::cached(
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
+    if (curved && curved(cell))
+      return nullptr;
     double     scale;
     const auto found = cache.find(shape_of(cell, scale));
     if (found == cache.end())
@@ -245,6 +249,8 @@ namespace signorini
     FEValues<dim>                                        &fe_values,
     double                                               &factor)
   {
+    if (curved && curved(cell))
+      return nullptr;
     double      scale;
     const Shape shape = shape_of(cell, scale);
     factor            = scales_linearly ? scale : 1.;

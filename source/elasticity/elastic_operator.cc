@@ -42,7 +42,8 @@ namespace signorini
           return std::make_unique<AutomaticOperator<dim>>(
             discretisation,
             !material.axisymmetric() &&
-              !material.template mean_dilatation<dim>(false),
+              !material.template mean_dilatation<dim>(false) &&
+              discretisation.degree() == 1,
             make);
         default:
           return make(false);

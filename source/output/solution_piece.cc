@@ -6,6 +6,7 @@
 #include <signorini/discretisation/axisymmetry.h>
 #include <signorini/output/solution_piece.h>
 
+#include <cmath>
 #include <optional>
 
 namespace signorini
@@ -37,6 +38,34 @@ namespace signorini
   }
 
 
+  namespace
+  {
+    /** The position of the node at @p unit (a support point of Q2) among
+     * the points of VTK's Lagrange quadrilateral or hexahedron of order 2:
+     * vertices, edges, faces, interior (vtkLagrangeHexahedron's
+     * PointIndexFromIJK as ParaView 5.11 gives it, but with the two last
+     * edges along z swapped: the files say VTK file version 0.1, and VTK's
+     * reader takes a hexahedron of a file older than 2.2 in that legacy
+     * order and swaps them back). */
+    template <int dim>
+    unsigned int
+    vtk_lagrange_index(const Point<dim> &unit)
+    {
+      static constexpr unsigned int quadrilateral[3][3] = {{0, 4, 1},
+                                                           {7, 8, 5},
+                                                           {3, 6, 2}};
+      static constexpr unsigned int hexahedron[3][3][3] = {
+        {{0, 8, 1}, {11, 24, 9}, {3, 10, 2}},
+        {{16, 22, 17}, {20, 26, 21}, {18, 23, 19}},
+        {{4, 12, 5}, {15, 25, 13}, {7, 14, 6}}};
+      unsigned int ijk[3] = {0, 0, 0};
+      for (unsigned int d = 0; d < dim; ++d)
+        ijk[d] = static_cast<unsigned int>(std::lround(2. * unit[d]));
+      return dim == 2 ? quadrilateral[ijk[1]][ijk[0]] :
+                        hexahedron[ijk[2]][ijk[1]][ijk[0]];
+    }
+  } // namespace
+
   template <int dim>
   VtuPiece
   build_piece(const PieceInputs<dim> &in, const unsigned int n_threads)
@@ -58,31 +87,47 @@ namespace signorini
       return piece;
 
     // All cells are of one kind (the mesh checks rule out mixed meshes).
-    const ReferenceCell     kind       = cells[0]->reference_cell();
-    const unsigned int      n_vertices = kind.n_vertices();
-    const std::size_t       n_points   = cells.size() * n_vertices;
-    std::vector<Point<dim>> unit_vertices;
-    for (unsigned int v = 0; v < n_vertices; ++v)
-      unit_vertices.push_back(kind.template vertex<dim>(v));
-    const Quadrature<dim>     at_vertices(unit_vertices);
-    std::vector<unsigned int> vtk_order(n_vertices);
-    for (unsigned int v = 0; v < n_vertices; ++v)
-      vtk_order[v] = v;
-    if (kind.is_hyper_cube())
-      // deal.II numbers a quadrilateral's vertices lexicographically, VTK
-      // counterclockwise (per face of a hexahedron).
-      for (unsigned int v = 0; v < n_vertices; v += 4)
-        std::swap(vtk_order[v + 2], vtk_order[v + 3]);
+    // Degree 1: a point at each vertex, the cell of VTK's linear type.
+    // Degree 2: a point at each node, a Lagrange cell of VTK's (curved, as
+    // the mapping curves it).
+    const ReferenceCell       kind = cells[0]->reference_cell();
+    const FiniteElement<dim> &fe   = in.dof_handler.get_fe();
+    std::vector<Point<dim>>   unit_points;
+    std::vector<unsigned int> vtk_order;
+    if (fe.degree == 1)
+      {
+        for (unsigned int v = 0; v < kind.n_vertices(); ++v)
+          unit_points.push_back(kind.template vertex<dim>(v));
+        vtk_order.resize(unit_points.size());
+        for (unsigned int v = 0; v < vtk_order.size(); ++v)
+          vtk_order[v] = v;
+        if (kind.is_hyper_cube())
+          // deal.II numbers a quadrilateral's vertices lexicographically,
+          // VTK counterclockwise (per face of a hexahedron).
+          for (unsigned int v = 0; v < vtk_order.size(); v += 4)
+            std::swap(vtk_order[v + 2], vtk_order[v + 3]);
+      }
+    else
+      {
+        unit_points = fe.base_element(0).get_unit_support_points();
+        vtk_order.resize(unit_points.size());
+        for (unsigned int q = 0; q < unit_points.size(); ++q)
+          vtk_order[vtk_lagrange_index<dim>(unit_points[q])] = q;
+      }
+    const unsigned int    n_vertices = unit_points.size();
+    const std::size_t     n_points   = cells.size() * n_vertices;
+    const Quadrature<dim> at_vertices(unit_points);
 
     piece.points.resize(3 * n_points);
     piece.connectivity.resize(n_points);
     piece.offsets.resize(cells.size());
-    piece.types.resize(cells.size(), kind.vtk_linear_type());
+    piece.types.resize(cells.size(),
+                       fe.degree == 1 ? kind.vtk_linear_type() :
+                                        kind.vtk_lagrange_type());
     for (auto &field : piece.fields)
       field.values.resize(field.n_components * n_points);
 
-    const FiniteElement<dim> &fe = in.dof_handler.get_fe();
-    const bool                mean_dilatation =
+    const bool mean_dilatation =
       in.fields.material_law().template mean_dilatation<dim>(
         fe.reference_cell().is_simplex());
     const bool        revolved = in.fields.material_law().axisymmetric();

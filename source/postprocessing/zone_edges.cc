@@ -74,15 +74,36 @@ namespace signorini
           owned_nodes.push_back(node.slip(solution).norm());
           owned_nodes.push_back(static_cast<double>(node.state));
         }
-    const auto &ids = surface.contact_ids();
+    // A face of degree 2 is two such pairs: each end with its mid-node.
+    const auto                          &ids = surface.contact_ids();
+    const auto                          &fe  = discretisation.fe();
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
               ids.count(cell->face(f)->boundary_id()))
-            for (unsigned int v = 0; v < 2; ++v)
-              owned_faces.push_back(cell->face(f)->vertex_dof_index(v, 0));
+            {
+              const auto face = cell->face(f);
+              if (fe.degree == 1)
+                for (unsigned int v = 0; v < 2; ++v)
+                  owned_faces.push_back(face->vertex_dof_index(v, 0));
+              else
+                {
+                  face->get_dof_indices(face_dofs);
+                  types::global_dof_index middle = 0;
+                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                    if (fe.face_system_to_component_index(i) ==
+                        std::make_pair(0U, 2U))
+                      middle = face_dofs[i];
+                  for (unsigned int v = 0; v < 2; ++v)
+                    {
+                      owned_faces.push_back(face->vertex_dof_index(v, 0));
+                      owned_faces.push_back(middle);
+                    }
+                }
+            }
 
     std::vector<Sample<dim>> samples;
     std::map<std::pair<types::global_dof_index, unsigned int>, unsigned int>

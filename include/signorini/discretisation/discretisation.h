@@ -29,8 +29,9 @@ namespace signorini
 {
   /**
    * The discretisation of the body: its mesh (and where each cycle's mesh
-   * comes from), the finite element (Q1 on quadrilaterals/hexahedra, P1 on
-   * triangles/tetrahedra, dim components), the mapping and quadratures, the
+   * comes from), the finite element (Q1 or Q2 on quadrilaterals/hexahedra,
+   * P1 on triangles/tetrahedra, dim components), the mapping and
+   * quadratures, the
    * dofs with their index sets, and the constraints that stay fixed within a
    * load step: hanging nodes, and those plus the Dirichlet data (and, in an
    * axisymmetric model, u_r = 0 on the axis). It gives the weight of the
@@ -159,12 +160,28 @@ namespace signorini
     dof_handler() const;
     const dealii::FiniteElement<dim> &
     fe() const;
+    /** The linear mapping (degree 1), or the mapping of degree 2 whose
+     * cells follow the mesh's manifolds. */
     const dealii::Mapping<dim> &
     mapping() const;
+    /** The element's polynomial degree (Geometry/Element degree). */
+    unsigned int
+    degree() const;
+    /** Whether the mapping curves @p cell: a mapping of degree 2 and a
+     * manifold other than the flat one on the cell, a face or (3D) an
+     * edge. A cell that is not curved is the image of its vertices. */
+    bool
+    curved(
+      const typename dealii::Triangulation<dim>::cell_iterator &cell) const;
+    /** Gauss rules exact for the stiffness of the element's degree. */
     const dealii::Quadrature<dim> &
     quadrature() const;
     const dealii::Quadrature<dim - 1> &
     face_quadrature() const;
+    /** The rule of the contact nodes' lumped masses: the face rule at
+     * degree 1, Gauss-Lobatto at degree 2 (the nodes themselves). */
+    const dealii::Quadrature<dim - 1> &
+    contact_face_quadrature() const;
     const dealii::IndexSet &
     locally_owned_dofs() const;
     const dealii::IndexSet &
@@ -210,8 +227,10 @@ namespace signorini
     double                                      diagonal      = 0.;
     std::unique_ptr<dealii::FiniteElement<dim>> element;
     const dealii::Mapping<dim>                 *linear_mapping = nullptr;
+    std::unique_ptr<dealii::Mapping<dim>>       curved_mapping;
     dealii::Quadrature<dim>                     cell_rule;
     dealii::Quadrature<dim - 1>                 face_rule;
+    dealii::Quadrature<dim - 1>                 contact_face_rule;
     dealii::DoFHandler<dim>                     dofs;
     dealii::IndexSet                            owned_dofs;
     dealii::IndexSet                            relevant_dofs;

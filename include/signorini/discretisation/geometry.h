@@ -66,6 +66,9 @@ namespace signorini
     std::string mesh_file;
     /** Global refinements of the coarse mesh before cycle 0. */
     unsigned int initial_refinement = 0;
+    /** Polynomial degree of the elements: 1 (Q1) or 2 (Q2, with cells
+     * that follow the curved boundaries by a mapping of degree 2). */
+    unsigned int element_degree = 1;
 
     /** Declares the entries, with the defaults of a default-constructed
      * instance. */

@@ -10,14 +10,15 @@
 namespace signorini
 {
   /**
-   * The values of vectors of a Q1 displacement (one dof per vertex and
-   * component) attached to the cells of a distributed mesh for a checkpoint,
-   * each vertex's values once: the first locally owned cell (in the order of
-   * the active cells) that has a locally owned vertex carries it. A cell's
-   * record is a byte naming the vertices it carries, then, for each of them
-   * and each vector, its dim values. deal.II's SolutionTransfer stores every
-   * dof of every cell instead: 2^dim times dim values per cell and vector,
-   * about seven times as many bytes on a 3D mesh.
+   * The values of vectors of a Lagrange displacement (one dof per node and
+   * component: the vertices, and at degree 2 the mid-nodes) attached to the
+   * cells of a distributed mesh for a checkpoint, each node's values once:
+   * the first locally owned cell (in the order of the active cells) that
+   * has a locally owned node carries it. A cell's record is a bit per node
+   * of the cell (a byte at degree 1, four at degree 2 in 3D) naming the
+   * nodes it carries, then, for each of them and each vector, its dim
+   * values. deal.II's SolutionTransfer stores every dof of every cell
+   * instead: about seven times as many bytes on a 3D Q1 mesh.
    *
    * The records travel with their cells when the mesh is loaded on another
    * number of processes; each value is written once, by the process that

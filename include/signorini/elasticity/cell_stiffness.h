@@ -10,6 +10,7 @@
 #include <signorini/elasticity/material.h>
 
 #include <array>
+#include <functional>
 #include <map>
 
 namespace signorini
@@ -36,7 +37,13 @@ namespace signorini
   class CellStiffness
   {
   public:
-    CellStiffness(const Material &material);
+    /** Whether a cell is curved by the mapping (its geometry more than its
+     * vertices): such cells are never cached. */
+    using CurvedCell = std::function<bool(
+      const typename dealii::Triangulation<dim>::cell_iterator &)>;
+
+    /** @p curved: see CurvedCell; empty for a linear mapping. */
+    CellStiffness(const Material &material, const CurvedCell &curved = {});
 
     /** Forgets the cached matrices (call when the mesh changes). */
     void
@@ -83,7 +90,8 @@ namespace signorini
     shape_of(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
              double &scale) const;
 
-    const Material &material;
+    const Material  &material;
+    const CurvedCell curved;
     /** Whether the matrix of a cell scaled by s is s times the unscaled
      * one's (3D, axisymmetric), or the same (2D plane states). */
     const bool                                  scales_linearly;
