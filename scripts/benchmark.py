@@ -5,8 +5,9 @@ contact solve over that of one linear elasticity solve on the same mesh with
 the same linear solver, both measured in the same run (`Output/Timing table`),
 and the peak memory. Medians over repeated runs; the machine is shared.
 
-    scripts/benchmark [--repeat N] [--2d | --3d | --friction-3d]
-                      (default: all three parts, 3 runs per scene)
+    scripts/benchmark [--repeat N] [--2d | --3d | --friction-3d |
+                       --degree-2]
+                      (default: all four parts, 3 runs per scene)
 
 The 3D part runs the 3D scenes on one and two processes (`mpirun`), the
 indentation scene at more than a million dofs as a whole run, deal.II's
@@ -16,11 +17,13 @@ scene at more than 200k dofs on one and two processes. The friction-3d
 part runs the indentation scene past a million dofs on two processes
 (matrix-free) with Coulomb friction and without, in turn: per cycle the
 contact solve of each over one linear solve, their quotient, and the memory
-per dof.
+per dof. The degree-2 part runs scenes on Q1 and on Q2 (Element degree
+= 2) in turn, with the assembled operator: one linear solve's time per dof
+and core on the last cycle of each, and Q2's over Q1's.
 
 Prints the tables and rewrites the sections of doc/performance.md between
 <!-- begin benchmark --> and <!-- end benchmark --> (and benchmark-3d,
-benchmark-friction-3d).
+benchmark-friction-3d, benchmark-degree-2).
 Runs go to build/benchmark/.
 
 For the test suite only: with SIGNORINI_SMOKE=FOLDER (see scripts/common.py)
@@ -419,13 +422,14 @@ def three_d(repeat):
 
 
 def main():
-    repeat, parts = 1 if common.SMOKE else 3, {"2d", "3d", "friction-3d"}
+    repeat = 1 if common.SMOKE else 3
+    parts = {"2d", "3d", "friction-3d", "degree-2"}
     arguments = sys.argv[1:]
     while arguments:
         if arguments[0] == "--repeat" and len(arguments) > 1:
             repeat = int(arguments[1])
             arguments = arguments[2:]
-        elif arguments[0] in ("--2d", "--3d", "--friction-3d"):
+        elif arguments[0] in ("--2d", "--3d", "--friction-3d", "--degree-2"):
             parts = {arguments[0][2:]}
             arguments = arguments[1:]
         else:
@@ -440,6 +444,8 @@ def main():
         sections["benchmark"] = two_d(repeat)
     if "friction-3d" in parts:
         sections["benchmark-friction-3d"] = friction_3d(repeat)
+    if "degree-2" in parts:
+        sections["benchmark-degree-2"] = degree_2(repeat)
     common.replace_sections(common.output_file("doc/performance.md"),
                             sections)
 
@@ -485,6 +491,54 @@ def two_d(repeat):
                  "per cycle each one's contact solve over one linear solve on "
                  "its mesh, and their quotient:\n\n" + friction)
     return text
+
+
+# Q1 against Q2 (assembled): (name, scene, Q1's overrides, Q2's overrides),
+# the Q2 runs from a coarser start so that both end near the same dofs.
+Q2 = {"Element degree": "2"}
+DEGREE_CASES = [
+    ("hertz_cylinder (2D, curved)", "prm/hertz_cylinder.prm",
+     {"Mesh refinement": {"Number of cycles": "10"}},
+     {"Geometry": {**Q2, "Initial refinement": "1"},
+      "Mesh refinement": {"Number of cycles": "12"}}),
+    ("sphere_indentation (3D box)", "prm/sphere_indentation.prm",
+     {"Mesh refinement": {"Number of cycles": "4"}, **AMG_CG},
+     {"Geometry": {**Q2, "Initial refinement": "2"},
+      "Mesh refinement": {"Number of cycles": "4"}, **AMG_CG}),
+    ("hertz_sphere (3D, curved)", "prm/hertz_sphere.prm",
+     {"Mesh refinement": {"Number of cycles": "5"}, **AMG_CG},
+     {"Geometry": {**Q2, "Initial refinement": "1"},
+      "Mesh refinement": {"Number of cycles": "5"}, **AMG_CG}),
+]
+
+
+def degree_2(repeat):
+    """Q1 against Q2: one linear solve per dof and core on the last cycle,
+    each measured in the same run as its contact solve, the two degrees run
+    in turn; returns the section of doc/performance.md."""
+    rows = []
+    cases = DEGREE_CASES[:1] if common.SMOKE else DEGREE_CASES
+    for name, scene, q1, q2 in cases:
+        slug = name.split()[0]
+        measured = measure_in_turn([(slug + "_q1", scene, q1, 0),
+                                    (slug + "_q2", scene, q2, 0)], repeat)
+        per_dof = {}
+        for degree in ("q1", "q2"):
+            last = measured[slug + "_" + degree][-1]
+            per_dof[degree] = 1e6 * last["linear_solve"] / last["dofs"]
+            rows.append([name if degree == "q1" else "",
+                         degree.upper(), "{:,}".format(int(last["dofs"])),
+                         "%.3f" % last["linear_solve"],
+                         "%.2f" % per_dof[degree], "%.2f" % last["ratio"]])
+        rows.append(["", "Q2 / Q1", "", "",
+                     "%.2f" % (per_dof["q2"] / per_dof["q1"]), ""])
+    text = common.table(["scene", "element", "last cycle dofs",
+                         "linear solve [s]", "per dof [µs]",
+                         "contact solve / linear solve"], rows)
+    print("Degree 2 against degree 1\n\n" + text)
+    return ("One linear solve on the last cycle, assembled operator (direct "
+            "in 2D, AMG-CG in 3D), one process, medians of %d runs, the two "
+            "degrees in turn:\n\n%s" % (repeat, text))
 
 
 def friction_3d(repeat):

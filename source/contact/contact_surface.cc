@@ -123,72 +123,85 @@ namespace signorini
     // The nodes of the contact boundary, each once, with their gaps: the
     // vertices, and at degree 2 the mid-nodes of edges and faces (where the
     // mapping puts them: on a curved boundary's manifold).
-    const auto                          &fe          = discretisation.fe();
-    const auto                          &base        = fe.base_element(0);
-    const unsigned int                   n_cell_dofs = fe.n_dofs_per_cell();
-    FEValues<dim>                        at_nodes(discretisation.mapping(),
+    std::vector<Vertex>                                vertices;
+    std::map<types::global_dof_index, unsigned int>    vertex_index;
+    std::optional<std::pair<Point<dim>, unsigned int>> non_finite;
+    const auto                                         add_node =
+      [&](const std::array<types::global_dof_index, dim> &dofs,
+          const Point<dim>                               &position,
+          const types::boundary_id                        id) {
+        const auto [at, added] = vertex_index.emplace(dofs[0], vertices.size());
+        if (added)
+          {
+            Vertex vertex;
+            vertex.position = position;
+            vertex.dofs     = dofs;
+            for (unsigned int d = 0; d < dim; ++d)
+              vertex.free[d] = !constraints.is_constrained(dofs[d]);
+            vertex.gaps.resize(n_obstacles);
+            vertex.normals.resize(n_obstacles);
+            for (unsigned int k = 0; k < n_obstacles; ++k)
+              vertex.gaps[k] =
+                obstacle_set.gap(k, vertex.position, vertex.normals[k]);
+            vertices.push_back(vertex);
+          }
+        auto &vertex = vertices[at->second];
+        vertex.boundary_ids.insert(id);
+        // A gap that is not a number where a node can act on it.
+        for (unsigned int k = 0; k < n_obstacles; ++k)
+          if (!std::isfinite(vertex.gaps[k]) &&
+              !(free_part(vertex.normals[k], vertex.free) < fixed_along_normal))
+            non_finite = {vertex.position, k};
+      };
+    const auto                              &fe   = discretisation.fe();
+    const auto                              &base = fe.base_element(0);
+    FEValues<dim>                            at_nodes(discretisation.mapping(),
                            fe,
                            Quadrature<dim>(base.get_unit_support_points()),
                            update_quadrature_points);
-    std::vector<types::global_dof_index> cell_dofs(n_cell_dofs);
-    std::vector<Vertex>                  vertices;
-    std::map<types::global_dof_index, unsigned int>    vertex_index;
-    std::optional<std::pair<Point<dim>, unsigned int>> non_finite;
+    std::vector<types::global_dof_index>     cell_dofs(fe.n_dofs_per_cell());
+    std::array<types::global_dof_index, dim> dofs;
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         {
           bool mapped = false;
           for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                ids.count(cell->face(f)->boundary_id()))
-              {
-                if (!mapped)
+            {
+              const auto face = cell->face(f);
+              if (!face->at_boundary() || !ids.count(face->boundary_id()))
+                continue;
+              if (fe.degree == 1)
+                {
+                  for (const unsigned int v : face->vertex_indices())
+                    {
+                      for (unsigned int d = 0; d < dim; ++d)
+                        dofs[d] = face->vertex_dof_index(v, d);
+                      add_node(dofs, face->vertex(v), face->boundary_id());
+                    }
+                  continue;
+                }
+              // Degree 2 (quadrilaterals and hexahedra): the cell's nodes
+              // on the face.
+              if (!mapped)
+                {
+                  cell->get_dof_indices(cell_dofs);
+                  at_nodes.reinit(cell);
+                  mapped = true;
+                }
+              for (unsigned int b = 0; b < base.n_dofs_per_cell(); ++b)
+                if (fe.has_support_on_face(fe.component_to_system_index(0, b),
+                                           f))
                   {
-                    cell->get_dof_indices(cell_dofs);
-                    if (fe.degree > 1)
-                      at_nodes.reinit(cell);
-                    mapped = true;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      dofs[d] = cell_dofs[fe.component_to_system_index(d, b)];
+                    add_node(dofs,
+                             b < cell->n_vertices() ?
+                               cell->vertex(b) :
+                               at_nodes.quadrature_point(b),
+                             face->boundary_id());
                   }
-                for (unsigned int b = 0; b < base.n_dofs_per_cell(); ++b)
-                  {
-                    if (!fe.has_support_on_face(
-                          fe.component_to_system_index(0, b), f))
-                      continue;
-                    const auto [at, added] = vertex_index.emplace(
-                      cell_dofs[fe.component_to_system_index(0, b)],
-                      vertices.size());
-                    if (added)
-                      {
-                        Vertex vertex;
-                        vertex.position = b < cell->n_vertices() ?
-                                            cell->vertex(b) :
-                                            at_nodes.quadrature_point(b);
-                        for (unsigned int d = 0; d < dim; ++d)
-                          {
-                            vertex.dofs[d] =
-                              cell_dofs[fe.component_to_system_index(d, b)];
-                            vertex.free[d] =
-                              !constraints.is_constrained(vertex.dofs[d]);
-                          }
-                        vertex.gaps.resize(n_obstacles);
-                        vertex.normals.resize(n_obstacles);
-                        for (unsigned int k = 0; k < n_obstacles; ++k)
-                          vertex.gaps[k] = obstacle_set.gap(k,
-                                                            vertex.position,
-                                                            vertex.normals[k]);
-                        vertices.push_back(vertex);
-                      }
-                    auto &vertex = vertices[at->second];
-                    vertex.boundary_ids.insert(cell->face(f)->boundary_id());
-                    // A gap that is not a number where a node can act on it.
-                    for (unsigned int k = 0; k < n_obstacles; ++k)
-                      if (!std::isfinite(vertex.gaps[k]) &&
-                          !(free_part(vertex.normals[k], vertex.free) <
-                            fixed_along_normal))
-                        non_finite = {vertex.position, k};
-                  }
-              }
+            }
         }
     if (Utilities::MPI::max(non_finite ? 1U : 0U, mpi_communicator) > 0)
       {

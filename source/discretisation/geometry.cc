@@ -220,18 +220,19 @@ namespace signorini
                       Patterns::Anything(),
                       "rectangle: number of cells in x, y[, z] on the coarse "
                       "mesh.");
-    prm.declare_entry("Cell type",
-                      cell_types.name(defaults.cell_type),
-                      cell_types.pattern(),
-                      "quadrilateral: quadrilateral/hexahedral cells with Q1 "
-                      "elements; simplex: triangles/tetrahedra with P1 "
-                      "elements. rectangle: simplex splits each "
-                      "quadrilateral into 8 triangles (hexahedron into 24 "
-                      "tetrahedra); automatic is quadrilateral. gmsh with a "
-                      ".geo: Gmsh makes triangles/tetrahedra, or recombined "
-                      "quadrilaterals (hexahedra: tetrahedra split into "
-                      "four); automatic is what the .geo says (Gmsh's "
-                      "default: simplices).");
+    prm.declare_entry(
+      "Cell type",
+      cell_types.name(defaults.cell_type),
+      cell_types.pattern(),
+      "quadrilateral: quadrilateral/hexahedral cells with Q1 "
+      "elements (Q2 with Element degree = 2); simplex: "
+      "triangles/tetrahedra with P1 elements. rectangle: simplex splits each "
+      "quadrilateral into 8 triangles (hexahedron into 24 "
+      "tetrahedra); automatic is quadrilateral. gmsh with a "
+      ".geo: Gmsh makes triangles/tetrahedra, or recombined "
+      "quadrilaterals (hexahedra: tetrahedra split into "
+      "four); automatic is what the .geo says (Gmsh's "
+      "default: simplices).");
     prm.declare_entry("Mesh size",
                       entry_text::of(defaults.mesh_size),
                       Patterns::Double(0.),

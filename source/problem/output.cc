@@ -10,6 +10,7 @@
 #include <signorini/output/solution_piece.h>
 #include <signorini/postprocessing/balance.h>
 #include <signorini/postprocessing/contact_zone.h>
+#include <signorini/postprocessing/pressure_recovery.h>
 #include <signorini/postprocessing/probes.h>
 #include <signorini/problem/contact_problem.h>
 
@@ -189,13 +190,13 @@ namespace signorini
     // is the support's reaction and the obstacle's force together: the
     // obstacle's share is its own.
     const auto &tangential = newton.tangential_traction();
-    auto        zone =
-      evaluate_contact_zone(discretisation,
-                            contact_surface,
-                            pressure,
-                            solution,
-                            parameters.reference,
-                            tangential.size() > 0 ? &tangential : nullptr);
+    auto        zone       = evaluate_contact_zone(
+      discretisation,
+      contact_surface,
+      recover_pressure(discretisation, contact_surface, pressure),
+      solution,
+      parameters.reference,
+      tangential.size() > 0 ? &tangential : nullptr);
     if (zone.supported)
       contact_force += zone.supported_force;
     // The radial forces of a whole revolution cancel: its resultants are
@@ -395,8 +396,9 @@ namespace signorini
                                            discretisation.body_size()));
     const std::vector<double>     relevant_displacement =
       relevant_entries(solution, relevant_dofs);
-    const std::vector<double> relevant_pressure =
-      relevant_entries(pressure, relevant_dofs);
+    const std::vector<double> relevant_pressure = relevant_entries(
+      recover_pressure(discretisation, contact_surface, pressure),
+      relevant_dofs);
     const std::vector<double> relevant_active =
       relevant_entries(active, relevant_dofs);
     return std::make_shared<const VtuPiece>(
@@ -513,18 +515,22 @@ namespace signorini
 
     const std::string &directory = parameters.output.directory;
     if (parameters.output.contact_pressure_table)
-      write_collectively(mpi_communicator, [&]() {
-        write_contact_pressure_table(directory + "/contact_pressure-" +
-                                       Utilities::int_to_string(cycle, 2) +
-                                       ".csv",
-                                     contact_surface,
-                                     pressure,
-                                     solution,
-                                     mpi_communicator,
-                                     newton.tangential_traction().size() > 0 ?
-                                       &newton.tangential_traction() :
-                                       nullptr);
-      });
+      {
+        const VectorType shown =
+          recover_pressure(discretisation, contact_surface, pressure);
+        write_collectively(mpi_communicator, [&]() {
+          write_contact_pressure_table(directory + "/contact_pressure-" +
+                                         Utilities::int_to_string(cycle, 2) +
+                                         ".csv",
+                                       contact_surface,
+                                       shown,
+                                       solution,
+                                       mpi_communicator,
+                                       newton.tangential_traction().size() > 0 ?
+                                         &newton.tangential_traction() :
+                                         nullptr);
+        });
+      }
   }
 
   template <int dim>
