@@ -3,6 +3,7 @@
 #include <signorini/postprocessing/zone_edges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -55,9 +56,7 @@ namespace signorini
                       const TrilinosWrappers::MPI::Vector &solution)
   {
     std::vector<ZoneEdges<dim>> edges(surface.obstacles().size());
-    if (dim != 2)
-      return edges;
-    const MPI_Comm comm = discretisation.mpi_communicator();
+    const MPI_Comm              comm = discretisation.mpi_communicator();
 
     // The owned nodes, (dof of x, obstacle, position, pressure, slip,
     // state) each, and the faces of the contact boundary, (dof of x at one
@@ -74,9 +73,17 @@ namespace signorini
           owned_nodes.push_back(node.slip(solution).norm());
           owned_nodes.push_back(static_cast<double>(node.state));
         }
-    // A face of degree 2 is two such pairs: each end with its mid-node.
-    const auto                          &ids = surface.contact_ids();
-    const auto                          &fe  = discretisation.fe();
+    // Pairs of nodes next to each other along the contact boundary: in 2D
+    // a face's ends (at degree 2 each end with its mid-node); in 3D the
+    // lines of a face's grid of nodes (its edges; at degree 2 also from
+    // the edges' mid-nodes through the centre).
+    const auto &ids  = surface.contact_ids();
+    const auto &fe   = discretisation.fe();
+    const auto  pair = [&](const types::global_dof_index a,
+                          const types::global_dof_index b) {
+      owned_faces.push_back(a);
+      owned_faces.push_back(b);
+    };
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
@@ -85,11 +92,13 @@ namespace signorini
           if (cell->face(f)->at_boundary() &&
               ids.count(cell->face(f)->boundary_id()))
             {
-              const auto face = cell->face(f);
-              if (fe.degree == 1)
-                for (unsigned int v = 0; v < 2; ++v)
-                  owned_faces.push_back(face->vertex_dof_index(v, 0));
-              else
+              const auto face   = cell->face(f);
+              const auto vertex = [&](const unsigned int v) {
+                return face->vertex_dof_index(v, 0);
+              };
+              if (dim == 2 && fe.degree == 1)
+                pair(vertex(0), vertex(1));
+              else if (dim == 2)
                 {
                   face->get_dof_indices(face_dofs);
                   types::global_dof_index middle = 0;
@@ -97,11 +106,43 @@ namespace signorini
                     if (fe.face_system_to_component_index(i) ==
                         std::make_pair(0U, 2U))
                       middle = face_dofs[i];
-                  for (unsigned int v = 0; v < 2; ++v)
+                  pair(vertex(0), middle);
+                  pair(middle, vertex(1));
+                }
+              else if (face->n_vertices() == 3)
+                {
+                  pair(vertex(0), vertex(1));
+                  pair(vertex(1), vertex(2));
+                  pair(vertex(2), vertex(0));
+                }
+              else if (fe.degree == 1)
+                {
+                  pair(vertex(0), vertex(1));
+                  pair(vertex(2), vertex(3));
+                  pair(vertex(0), vertex(2));
+                  pair(vertex(1), vertex(3));
+                }
+              else
+                {
+                  // A quadrilateral's lines 0, 1 run from vertex 0 to 2
+                  // and 1 to 3, lines 2, 3 from 0 to 1 and 2 to 3.
+                  std::array<types::global_dof_index, 4> middle;
+                  for (unsigned int l = 0; l < 4; ++l)
+                    middle[l] = face->line(l)->dof_index(0);
+                  const types::global_dof_index centre     = face->dof_index(0);
+                  const unsigned int            ends[4][2] = {{0, 2},
+                                                              {1, 3},
+                                                              {0, 1},
+                                                              {2, 3}};
+                  for (unsigned int l = 0; l < 4; ++l)
                     {
-                      owned_faces.push_back(face->vertex_dof_index(v, 0));
-                      owned_faces.push_back(middle);
+                      pair(vertex(ends[l][0]), middle[l]);
+                      pair(middle[l], vertex(ends[l][1]));
                     }
+                  pair(middle[0], centre);
+                  pair(centre, middle[1]);
+                  pair(middle[2], centre);
+                  pair(centre, middle[3]);
                 }
             }
 
@@ -141,14 +182,40 @@ namespace signorini
     // The contact zone's edge between node i (in contact) and its open
     // neighbour n, from the pressure of i and of its other neighbour in
     // contact.
+    // In 3D a node has neighbours in several directions: the node before
+    // i is the one on the line from n through i (the neighbour most nearly
+    // opposite n; none if no neighbour lies within 45 degrees of it).
+    const auto before =
+      [&](const unsigned int i, const unsigned int n, const auto &accepted) {
+        unsigned int   chosen = numbers::invalid_unsigned_int;
+        double         best   = std::sqrt(0.5);
+        Tensor<1, dim> ahead  = samples[n].position - samples[i].position;
+        ahead /= ahead.norm();
+        for (const unsigned int j : samples[i].neighbours)
+          if (j != n && accepted(j))
+            {
+              if (dim == 2)
+                return j;
+              Tensor<1, dim> back   = samples[i].position - samples[j].position;
+              const double   cosine = back * ahead / back.norm();
+              if (cosine > best)
+                {
+                  best   = cosine;
+                  chosen = j;
+                }
+            }
+        return chosen;
+      };
     const auto contact_edge = [&](const unsigned int i, const unsigned int n) {
-      for (const unsigned int j : samples[i].neighbours)
-        if (j != n && samples[j].state != NodeState::open)
-          return square_root_edge(samples[j].position,
-                                  samples[j].pressure,
-                                  samples[i].position,
-                                  samples[i].pressure,
-                                  samples[n].position);
+      const unsigned int j = before(i, n, [&](const unsigned int k) {
+        return samples[k].state != NodeState::open;
+      });
+      if (j != numbers::invalid_unsigned_int)
+        return square_root_edge(samples[j].position,
+                                samples[j].pressure,
+                                samples[i].position,
+                                samples[i].pressure,
+                                samples[n].position);
       return samples[i].position;
     };
     // The stick zone's edge between node i (sticking) and its slipping
@@ -156,20 +223,19 @@ namespace signorini
     // |s|^(2/3) falls linearly to the edge.
     const auto stick_edge = [&](const unsigned int i, const unsigned int n) {
       const auto &inside = samples[i].position, &outside = samples[n].position;
-      for (const unsigned int m : samples[n].neighbours)
-        if (m != i && samples[m].state == NodeState::slip)
-          {
-            const double w_n = std::cbrt(std::pow(samples[n].slip, 2));
-            const double w_m = std::cbrt(std::pow(samples[m].slip, 2));
-            if (!(w_m > w_n))
-              break;
-            const double distance =
-              w_n * samples[m].position.distance(outside) / (w_m - w_n);
-            const double theta =
-              std::min(1., distance / outside.distance(inside));
-            return Point<dim>(outside + theta * (inside - outside));
-          }
-      return inside;
+      const unsigned int m = before(n, i, [&](const unsigned int k) {
+        return samples[k].state == NodeState::slip;
+      });
+      if (m == numbers::invalid_unsigned_int)
+        return inside;
+      const double w_n = std::cbrt(std::pow(samples[n].slip, 2));
+      const double w_m = std::cbrt(std::pow(samples[m].slip, 2));
+      if (!(w_m > w_n))
+        return inside;
+      const double distance =
+        w_n * samples[m].position.distance(outside) / (w_m - w_n);
+      const double theta = std::min(1., distance / outside.distance(inside));
+      return Point<dim>(outside + theta * (inside - outside));
     };
     for (unsigned int i = 0; i < samples.size(); ++i)
       if (samples[i].state != NodeState::open)

@@ -25,17 +25,19 @@ namespace signorini
   };
 
   /**
-   * The edges of each obstacle's contact and stick zones between the nodes,
-   * in 2D and axisymmetric models, where the contact boundary is a line of
-   * nodes (in 3D none: the zones' extents are those of their nodes). The
-   * same on every process.
+   * The edges of each obstacle's contact and stick zones between the nodes:
+   * along the contact boundary's line of nodes in 2D and axisymmetric
+   * models, along the lines of each face's grid of nodes in 3D (its edges,
+   * and at degree 2 the lines through its centre). The same on every
+   * process.
    *
    * At a smooth edge the pressure falls to zero like the square root of the
    * distance to the edge, and a sticking node's margin to the friction
    * bound does too, while the gap of an open node and the slip of a
    * slipping node grow like its 3/2 power. So the edge of the contact zone
    * is where p^2, extrapolated linearly from the last two nodes in contact
-   * (along the boundary), vanishes; for Hertz's p = p0 sqrt(1 - x^2/a^2)
+   * (along the boundary; in 3D along the line from the open node through
+   * the last node in contact), vanishes; for Hertz's p = p0 sqrt(1 - x^2/a^2)
    * that is exact up to O(h^2/a), where the nodes alone err by up to h.
    * The edge of the stick zone is where |s|^(2/3), the slip of the load
    * step extrapolated from the first two slipping nodes, vanishes (the
