@@ -327,18 +327,7 @@ namespace signorini
   Discretisation<dim>::curved(
     const typename Triangulation<dim>::cell_iterator &cell) const
   {
-    if (!curved_mapping)
-      return false;
-    if (cell->manifold_id() != numbers::flat_manifold_id)
-      return true;
-    for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->manifold_id() != numbers::flat_manifold_id)
-        return true;
-    if (dim == 3)
-      for (unsigned int l = 0; l < cell->n_lines(); ++l)
-        if (cell->line(l)->manifold_id() != numbers::flat_manifold_id)
-          return true;
-    return false;
+    return curved_mapping && !on_flat_manifolds(cell);
   }
 
   template <int dim>

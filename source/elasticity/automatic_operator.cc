@@ -16,15 +16,8 @@ namespace signorini
     affine(const Cell &cell)
     {
       constexpr int dim = Cell::AccessorType::dimension;
-      if (cell->manifold_id() != numbers::flat_manifold_id)
+      if (!on_flat_manifolds(cell))
         return false;
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->manifold_id() != numbers::flat_manifold_id)
-          return false;
-      if (dim == 3)
-        for (unsigned int l = 0; l < cell->n_lines(); ++l)
-          if (cell->line(l)->manifold_id() != numbers::flat_manifold_id)
-            return false;
       // Vertex i (bits x, y, z) at v0 + the edges along its bits.
       const auto   v0        = cell->vertex(0);
       const double tolerance = 1e-10 * cell->diameter();

@@ -56,7 +56,6 @@ namespace signorini
     const auto        &fe       = discretisation.fe();
     const auto        &base     = fe.base_element(0);
     const auto        &hanging  = discretisation.hanging_node_constraints();
-    const auto        &ids      = surface.contact_ids();
     const unsigned int n_points = base.n_dofs_per_cell();
     FEFaceValues<dim>  fe_face_values(discretisation.mapping(),
                                      fe,
@@ -74,39 +73,32 @@ namespace signorini
         to.emplace_back(dof, 1.);
       return to;
     };
-    for (const auto &cell :
-         discretisation.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()))
+    surface.for_each_owned_face(
+      discretisation, [&](const auto &cell, const unsigned int f) {
+        fe_face_values.reinit(cell, f);
+        cell->get_dof_indices(cell_dofs);
+        std::vector<unsigned int> on_face;
+        for (unsigned int b = 0; b < n_points; ++b)
+          if (fe.has_support_on_face(fe.component_to_system_index(0, b), f))
+            on_face.push_back(fe.component_to_system_index(0, b));
+        for (const unsigned int i : on_face)
+          for (const unsigned int j : on_face)
             {
-              fe_face_values.reinit(cell, f);
-              cell->get_dof_indices(cell_dofs);
-              std::vector<unsigned int> on_face;
-              for (unsigned int b = 0; b < n_points; ++b)
-                if (fe.has_support_on_face(fe.component_to_system_index(0, b),
-                                           f))
-                  on_face.push_back(fe.component_to_system_index(0, b));
-              for (const unsigned int i : on_face)
-                for (const unsigned int j : on_face)
+              double m = 0.;
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                m += fe_face_values.shape_value(i, q) *
+                     fe_face_values.shape_value(j, q) * fe_face_values.JxW(q) *
+                     discretisation.weight(fe_face_values, q);
+              for (const auto &[row, a] : masters(cell_dofs[i]))
+                for (const auto &[column, b] : masters(cell_dofs[j]))
                   {
-                    double m = 0.;
-                    for (const unsigned int q :
-                         fe_face_values.quadrature_point_indices())
-                      m += fe_face_values.shape_value(i, q) *
-                           fe_face_values.shape_value(j, q) *
-                           fe_face_values.JxW(q) *
-                           discretisation.weight(fe_face_values, q);
-                    for (const auto &[row, a] : masters(cell_dofs[i]))
-                      for (const auto &[column, b] : masters(cell_dofs[j]))
-                        {
-                          owned_entries.push_back(row);
-                          owned_entries.push_back(column);
-                          owned_entries.push_back(a * b * m);
-                        }
+                    owned_entries.push_back(row);
+                    owned_entries.push_back(column);
+                    owned_entries.push_back(a * b * m);
                   }
             }
+      });
 
     // Gathered on every process, restricted to the nodes that take part.
     std::vector<std::map<unsigned int, double>> rows(n);

@@ -85,66 +85,58 @@ namespace signorini
       owned_faces.push_back(b);
     };
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-    for (const auto &cell :
-         discretisation.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()))
-            {
-              const auto face   = cell->face(f);
-              const auto vertex = [&](const unsigned int v) {
-                return face->vertex_dof_index(v, 0);
-              };
-              if (dim == 2 && fe.degree == 1)
-                pair(vertex(0), vertex(1));
-              else if (dim == 2)
-                {
-                  face->get_dof_indices(face_dofs);
-                  types::global_dof_index middle = 0;
-                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                    if (fe.face_system_to_component_index(i) ==
-                        std::make_pair(0U, 2U))
-                      middle = face_dofs[i];
-                  pair(vertex(0), middle);
-                  pair(middle, vertex(1));
-                }
-              else if (face->n_vertices() == 3)
-                {
-                  pair(vertex(0), vertex(1));
-                  pair(vertex(1), vertex(2));
-                  pair(vertex(2), vertex(0));
-                }
-              else if (fe.degree == 1)
-                {
-                  pair(vertex(0), vertex(1));
-                  pair(vertex(2), vertex(3));
-                  pair(vertex(0), vertex(2));
-                  pair(vertex(1), vertex(3));
-                }
-              else
-                {
-                  // A quadrilateral's lines 0, 1 run from vertex 0 to 2
-                  // and 1 to 3, lines 2, 3 from 0 to 1 and 2 to 3.
-                  std::array<types::global_dof_index, 4> middle;
-                  for (unsigned int l = 0; l < 4; ++l)
-                    middle[l] = face->line(l)->dof_index(0);
-                  const types::global_dof_index centre     = face->dof_index(0);
-                  const unsigned int            ends[4][2] = {{0, 2},
-                                                              {1, 3},
-                                                              {0, 1},
-                                                              {2, 3}};
-                  for (unsigned int l = 0; l < 4; ++l)
-                    {
-                      pair(vertex(ends[l][0]), middle[l]);
-                      pair(middle[l], vertex(ends[l][1]));
-                    }
-                  pair(middle[0], centre);
-                  pair(centre, middle[1]);
-                  pair(middle[2], centre);
-                  pair(centre, middle[3]);
-                }
-            }
+    surface.for_each_owned_face(
+      discretisation, [&](const auto &cell, const unsigned int f) {
+        const auto face   = cell->face(f);
+        const auto vertex = [&](const unsigned int v) {
+          return face->vertex_dof_index(v, 0);
+        };
+        if (dim == 2 && fe.degree == 1)
+          pair(vertex(0), vertex(1));
+        else if (dim == 2)
+          {
+            face->get_dof_indices(face_dofs);
+            types::global_dof_index middle = 0;
+            for (unsigned int i = 0; i < face_dofs.size(); ++i)
+              if (fe.face_system_to_component_index(i) ==
+                  std::make_pair(0U, 2U))
+                middle = face_dofs[i];
+            pair(vertex(0), middle);
+            pair(middle, vertex(1));
+          }
+        else if (face->n_vertices() == 3)
+          {
+            pair(vertex(0), vertex(1));
+            pair(vertex(1), vertex(2));
+            pair(vertex(2), vertex(0));
+          }
+        else if (fe.degree == 1)
+          {
+            pair(vertex(0), vertex(1));
+            pair(vertex(2), vertex(3));
+            pair(vertex(0), vertex(2));
+            pair(vertex(1), vertex(3));
+          }
+        else
+          {
+            // A quadrilateral's lines 0, 1 run from vertex 0 to 2
+            // and 1 to 3, lines 2, 3 from 0 to 1 and 2 to 3.
+            std::array<types::global_dof_index, 4> middle;
+            for (unsigned int l = 0; l < 4; ++l)
+              middle[l] = face->line(l)->dof_index(0);
+            const types::global_dof_index centre = face->dof_index(0);
+            const unsigned int ends[4][2] = {{0, 2}, {1, 3}, {0, 1}, {2, 3}};
+            for (unsigned int l = 0; l < 4; ++l)
+              {
+                pair(vertex(ends[l][0]), middle[l]);
+                pair(middle[l], vertex(ends[l][1]));
+              }
+            pair(middle[0], centre);
+            pair(centre, middle[1]);
+            pair(middle[2], centre);
+            pair(centre, middle[3]);
+          }
+      });
 
     std::vector<Sample<dim>> samples;
     std::map<std::pair<types::global_dof_index, unsigned int>, unsigned int>

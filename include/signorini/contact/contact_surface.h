@@ -185,6 +185,22 @@ namespace signorini
     const std::set<dealii::types::boundary_id> &
     contact_ids() const;
 
+    /** Calls @p action(cell, f) for each face f of a locally owned cell of
+     * @p discretisation that lies on the contact boundary. */
+    template <typename Action>
+    void
+    for_each_owned_face(const Discretisation<dim> &discretisation,
+                        const Action              &action) const
+    {
+      for (const auto &cell :
+           discretisation.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                ids.count(cell->face(f)->boundary_id()))
+              action(cell, f);
+    }
+
     /** The gap of @p node after the displacement @p u [mm]. */
     double
     deformed_gap(const ContactNode<dim> &node, const VectorType &u) const;

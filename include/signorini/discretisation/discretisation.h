@@ -27,6 +27,25 @@
 
 namespace signorini
 {
+  /** Whether @p cell, its faces and (3D) its edges all lie on the flat
+   * manifold: a mapping of any degree makes it the image of its vertices. */
+  template <typename Cell>
+  bool
+  on_flat_manifolds(const Cell &cell)
+  {
+    constexpr int dim = Cell::AccessorType::dimension;
+    if (cell->manifold_id() != dealii::numbers::flat_manifold_id)
+      return false;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->manifold_id() != dealii::numbers::flat_manifold_id)
+        return false;
+    if (dim == 3)
+      for (unsigned int l = 0; l < cell->n_lines(); ++l)
+        if (cell->line(l)->manifold_id() != dealii::numbers::flat_manifold_id)
+          return false;
+    return true;
+  }
+
   /**
    * The discretisation of the body: its mesh (and where each cycle's mesh
    * comes from), the finite element (Q1 or Q2 on quadrilaterals/hexahedra,

@@ -1,0 +1,408 @@
+#!/usr/bin/python3
+"""The Hertz scenes of signorini modelled in GetFEM (the Debian package
+python3-getfem, 5.4), a peer code for scripts/work_precision.py:
+
+    2d  prm/hertz_cylinder.prm: the quarter disk R = 1 centred (0, 1),
+        E = 1000 MPa, nu = 0.3, plane strain, its symmetry line x = 0
+        sliding, its flat top y = 1 loaded by the traction (0, -5) (F/2 =
+        5 N/mm of the half model), pressed onto the rigid plane y = 0
+    3d  prm/hertz_sphere.prm: the quarter ball R = 1 centred (0, 0, 1),
+        its symmetry planes x = 0 and y = 0 sliding, its flat top z = 1
+        loaded by a uniform traction of resultant (0, 0, -0.375) (F/4 of
+        F = 1.5 N), held vertically only by the rigid plane z = 0
+
+    scripts/getfem_hertz.py 2d|3d [--degree 1|2] [--contact nodal|integral]
+                            [--cycles N] [--size H] [--fraction F]
+
+Lagrange elements of degree 1 or 2 (P1, P2) on triangles or tetrahedra. The
+first mesh is Gmsh's, of uniform size H, curved for P2 (its geometric
+transformation is of degree 2: GT_PK(d,2), the mid-edge nodes of the arc or
+sphere on it); then GetFEM's own adaptive refinement: a cycle solves,
+estimates the error of each cell by the jump of the normal stress across its
+inner faces (a Kelly-like indicator: eta_K^2 = sum over the inner faces F of
+K of h_K/2 |[sigma(u) n]|^2 integrated over F), and Bank-refines the
+fraction F of the cells with the largest indicators (30 %, as signorini's
+Kelly cycles; GetFEM does not coarsen). Refinement places the new nodes of
+the curved boundary on the parent cell's boundary; they are moved onto the
+circle or sphere (radially) after each refinement. The next cycle starts
+from the previous solution interpolated onto the refined mesh.
+
+Frictionless contact with the plane by Alart-Curnier's augmented
+Lagrangian: nodal (add_nodal_contact_with_rigid_obstacle_brick, the
+obstacle as the signed distance y or z, a multiplier per node of the arc,
+the node's contact force) or integral
+(add_integral_contact_with_rigid_obstacle_brick, a multiplier field of the
+same degree on the arc, the pressure); r = E. Newton's method with MUMPS.
+The symmetry lines or planes by normal Dirichlet conditions with
+multipliers.
+
+Measured as signorini measures (source/postprocessing/contact_zone.cc):
+p0 is the largest nodal pressure on the arc, a node's pressure its contact
+force (the multiplier) divided by its lumped area (the integral of its shape
+function over the arc; where that is not positive, at the vertices of
+quadratic triangles in 3D, the pressure is the consistent one, M p = f with
+the arc's mass matrix), or with the integral contact the multiplier's nodal
+value. The contact half-width a in 2D is the x of the last node in contact
+moved towards the first open one to where p^2, extrapolated linearly from
+the last two nodes in contact, vanishes; in 3D the smaller of the largest x
+and the largest y of the nodes in contact.
+
+Prints a CSV row per cycle on stdout as the cycle ends: cycle, cells, dofs
+(of the displacement), contact_nodes (in contact), iterations (Newton's),
+time [s] (time.perf_counter from the first line of this script, imports and
+Gmsh included, to the end of the cycle's error estimate), p0, a,
+p0_error, a_error (relative, signed, against Hertz's closed form), force
+(the contact force's normal resultant), max_penetration [mm].
+"""
+import time
+
+START = time.perf_counter()
+
+import argparse  # noqa: E402
+import os  # noqa: E402
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+
+import numpy as np  # noqa: E402
+import getfem as gf  # noqa: E402
+
+YOUNG, POISSON = 1000., 0.3
+E_STAR = YOUNG / (1 - POISSON ** 2)
+# Regions: the arc or sphere (contact), the flat top, the symmetry planes
+# x = 0 and y = 0, the inner faces (the indicator's jumps).
+CONTACT, TOP, SYMMETRY_X, SYMMETRY_Y, INNER = 1, 2, 3, 4, 5
+# A node is in contact where its pressure exceeds this fraction of the
+# largest (an open node's multiplier is zero to round-off, and may be
+# positive).
+ROUND_OFF = 1e-8
+COLUMNS = ["cycle", "cells", "dofs", "contact_nodes", "iterations", "time",
+           "p0", "a", "p0_error", "a_error", "force", "max_penetration"]
+
+
+class Scene:
+    """Geometry, load and Hertz's closed form of one scene."""
+
+    def __init__(self, dimension):
+        self.dim = dimension
+        self.radius = 1.
+        if dimension == 2:
+            self.centre = np.array([0., 1.])
+            force = 10.  # the whole cylinder's, per mm
+            self.load = force / 2  # the half model's, on the top of length 1
+            self.a = 2 * np.sqrt(force * self.radius / (np.pi * E_STAR))
+            self.p0 = 2 * force / (np.pi * self.a)
+        else:
+            self.centre = np.array([0., 0., 1.])
+            force = 1.5  # the whole ball's
+            self.load = force / 4  # the quarter model's
+            self.a = (3 * force * self.radius / (4 * E_STAR)) ** (1 / 3)
+            self.p0 = 3 * force / (2 * np.pi * self.a ** 2)
+
+    def geo(self, size):
+        """The Gmsh geometry, of uniform cell size `size`."""
+        if self.dim == 2:
+            return ("Point(1) = {0, 0, 0}; Point(2) = {1, 1, 0};\n"
+                    "Point(3) = {0, 1, 0};\n"
+                    "Circle(1) = {1, 3, 2}; Line(2) = {2, 3}; "
+                    "Line(3) = {3, 1};\n"
+                    "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\n"
+                    "Physical Surface(1) = {1};\n"
+                    "Mesh.MeshSizeMin = %g; Mesh.MeshSizeMax = %g;\n" %
+                    (size, size))
+        return ('SetFactory("OpenCASCADE");\n'
+                "Sphere(1) = {0, 0, 1, 1, -Pi/2, 0, Pi/2};\n"
+                "Physical Volume(1) = {1};\n"
+                "Mesh.MeshSizeMin = %g; Mesh.MeshSizeMax = %g;\n"
+                "Mesh.MeshSizeFromCurvature = 0;\n" % (size, size))
+
+    def on_arc(self, points):
+        """Whether each point (column) is on the circle or sphere."""
+        distance = np.linalg.norm(points - self.centre[:, None], axis=0)
+        return np.abs(distance - self.radius) < 1e-6
+
+    def snap(self, points):
+        """`points` (columns) moved radially onto the circle or sphere."""
+        offset = points - self.centre[:, None]
+        return self.centre[:, None] + self.radius * offset / \
+            np.linalg.norm(offset, axis=0)
+
+
+def first_mesh(scene, size, degree):
+    """Gmsh's mesh of the scene, with its geometric transformation of
+    `degree`, and the regions of its boundary."""
+    with tempfile.TemporaryDirectory(prefix="getfem-hertz-") as folder:
+        geo = os.path.join(folder, "body.geo")
+        msh = os.path.join(folder, "body.msh")
+        with open(geo, "w") as out:
+            out.write(scene.geo(size))
+        subprocess.run(["gmsh", "-%d" % scene.dim, "-order", str(degree),
+                        "-format", "msh22", "-o", msh, geo], check=True,
+                       stdout=subprocess.DEVNULL)
+        mesh = gf.Mesh("import", "gmsh", msh)
+    for region in mesh.regions():
+        mesh.delete_region(region)
+    faces = mesh.outer_faces()
+    points = [mesh.pts(mesh.pid_in_faces(faces[:, [i]]))
+              for i in range(faces.shape[1])]
+    chosen = {CONTACT: [], TOP: [], SYMMETRY_X: [], SYMMETRY_Y: []}
+    for i, face in enumerate(points):
+        if np.all(np.abs(face[0]) < 1e-9):
+            chosen[SYMMETRY_X].append(i)
+        elif scene.dim == 3 and np.all(np.abs(face[1]) < 1e-9):
+            chosen[SYMMETRY_Y].append(i)
+        elif np.all(np.abs(face[-1] - 1) < 1e-9):
+            chosen[TOP].append(i)
+        else:
+            assert np.all(scene.on_arc(face)), face
+            chosen[CONTACT].append(i)
+    for region, columns in chosen.items():
+        if columns:
+            mesh.set_region(region, faces[:, columns])
+    return mesh
+
+
+def snap_arc(mesh, scene):
+    """Moves the nodes of the contact region (the arc or sphere) onto it."""
+    ids = mesh.pid_in_regions(CONTACT)
+    points = mesh.pts()
+    points[:, ids] = scene.snap(points[:, ids])
+    mesh.set_pts(points)
+
+
+class Solver:
+    """One cycle's GetFEM model on the current mesh."""
+
+    def __init__(self, scene, mesh, degree, contact):
+        self.scene, self.mesh, self.degree = scene, mesh, degree
+        self.contact = contact
+        dim = scene.dim
+        self.mfu = gf.MeshFem(mesh, dim)
+        self.mfu.set_classical_fem(degree)
+        self.mfs = gf.MeshFem(mesh, 1)
+        self.mfs.set_classical_fem(degree)
+        # Exact for the stiffness on straight cells; the curved ones of P2
+        # with two orders more.
+        simplex = "IM_TRIANGLE" if dim == 2 else "IM_TETRAHEDRON"
+        order = 2 * degree if dim == 2 else min(2 * degree + 1, 8)
+        self.mim = gf.MeshIm(mesh, gf.Integ("%s(%d)" % (simplex, order)))
+        self.model = model = gf.Model("real")
+        model.add_fem_variable("u", self.mfu)
+        lame = YOUNG * POISSON / ((1 + POISSON) * (1 - 2 * POISSON))
+        shear = YOUNG / (2 * (1 + POISSON))
+        model.add_initialized_data("lambda", [lame])
+        model.add_initialized_data("mu", [shear])
+        model.add_isotropic_linearized_elasticity_brick(
+            self.mim, "u", "lambda", "mu")
+        # The top's traction, of the load's resultant over the top as meshed.
+        top = gf.asm("generic", self.mim, 0, "1", TOP)
+        traction = np.zeros(dim)
+        traction[-1] = -scene.load / top
+        model.add_initialized_data("traction", traction)
+        model.add_source_term_brick(self.mim, "u", "traction", TOP)
+        for region in (SYMMETRY_X, SYMMETRY_Y)[:dim - 1]:
+            model.add_normal_Dirichlet_condition_with_multipliers(
+                self.mim, "u", degree, region)
+        model.add_initialized_data("r", [YOUNG])
+        obstacle = "xyz"[dim - 1]  # the signed distance to the plane
+        contact_dofs = self.mfu.basic_dof_on_region(CONTACT)
+        # The brick's multipliers: one per node of the region, in the order
+        # of the nodes' first dofs.
+        self.nodes = np.sort(contact_dofs)[::dim]
+        if contact == "nodal":
+            model.add_variable("lambda_n", len(self.nodes))
+            model.add_nodal_contact_with_rigid_obstacle_brick(
+                self.mim, "u", "lambda_n", "r", CONTACT, obstacle, 1)
+        else:
+            self.mfl = gf.MeshFem(mesh, 1)
+            self.mfl.set_classical_fem(degree)
+            model.add_filtered_fem_variable("lambda_n", self.mfl, CONTACT)
+            model.add_initialized_fem_data(
+                "obstacle", self.mfs, self.mfs.eval(obstacle))
+            model.add_integral_contact_with_rigid_obstacle_brick(
+                self.mim, "u", "lambda_n", "obstacle", "r", CONTACT, 1)
+
+    def solve(self, initial, pressure=None):
+        """Newton's method from the displacement `initial` and, if given,
+        the contact pressure `pressure` (a field of the scalar mesh_fem);
+        returns the number of iterations."""
+        self.model.set_variable("u", initial)
+        if pressure is not None:
+            if self.contact == "nodal":
+                mass = gf.asm_mass_matrix(self.mim, self.mfs, self.mfs,
+                                          CONTACT)
+                guess = -mass.mult(pressure)[self.nodes // self.scene.dim]
+            else:
+                guess = -pressure[self.mfl.basic_dof_on_region(CONTACT)]
+            self.model.set_variable("lambda_n", guess)
+        iterations, converged = self.model.solve(
+            "max_res", 1e-9, "max_iter", 50, "lsolver", "mumps",
+            *(["very noisy"] if os.environ.get("GETFEM_NOISY") else []))
+        if not converged:
+            sys.exit("getfem_hertz.py: Newton's method did not converge")
+        return iterations
+
+    def measure(self):
+        """p0, a, the contact nodes, the normal contact force and the
+        largest penetration; keeps the nodal pressures as a field of the
+        scalar mesh_fem (`pressure`), the next cycle's first guess."""
+        scene, dim = self.scene, self.scene.dim
+        u = self.model.variable("u")
+        multiplier = self.model.variable("lambda_n")
+        if self.contact == "nodal":
+            positions = self.mfu.basic_dof_nodes(self.nodes)
+            scalar = self.nodes // dim
+            assert np.allclose(self.mfs.basic_dof_nodes(scalar), positions)
+            force = -multiplier  # GetFEM's multiplier is negative in contact
+            mass = gf.asm_mass_matrix(self.mim, self.mfs, self.mfs, CONTACT)
+            lumped = mass.mult(np.ones(self.mfs.nbdof()))[scalar]
+            if np.all(lumped > 0):
+                pressure = force / lumped
+            else:
+                pressure = consistent_pressure(mass, scalar, force)
+            in_contact = pressure > ROUND_OFF * pressure.max()
+            total = force.sum()
+            self.pressure = np.zeros(self.mfs.nbdof())
+            self.pressure[scalar] = pressure
+        else:
+            dofs = self.mfl.basic_dof_on_region(CONTACT)
+            positions = self.mfl.basic_dof_nodes(dofs)
+            pressure = -multiplier
+            in_contact = pressure > ROUND_OFF * pressure.max()
+            total = gf.asm("generic", self.mim, 0, "-lambda_n", CONTACT,
+                           self.model)
+            self.pressure = np.zeros(self.mfl.nbdof())
+            self.pressure[dofs] = pressure
+        gaps = self.mfu.basic_dof_nodes(self.nodes)[-1] + \
+            u[self.nodes + dim - 1]
+        penetration = max(0., -gaps.min())
+        p0 = pressure.max()
+        if dim == 2:
+            a = half_width(positions[0], pressure, in_contact)
+        else:
+            a = min(positions[0, in_contact].max(),
+                    positions[1, in_contact].max())
+        return p0, a, int(in_contact.sum()), total, penetration
+
+    def indicators(self):
+        """The Kelly-like indicator of each cell (eta_K^2) and the cells'
+        ids."""
+        mesh = self.mesh
+        mesh.set_region(INNER, mesh.inner_faces())
+        mfp0 = gf.MeshFem(mesh, 1)
+        mfp0.set_classical_fem(0)
+        jump = "(Grad_u - Interpolate(Grad_u, neighbor_element))"
+        stress = "(lambda*Trace(%s)*Id(meshdim) + mu*(%s + (%s)'))" % (
+            jump, jump, jump)
+        expression = ("0.5*element_size*Norm_sqr(%s*Normal)*"
+                      "(Test_psi + Interpolate(Test_psi, neighbor_element))"
+                      % stress)
+        eta = gf.asm("generic", self.mim, 1, expression, INNER, self.model,
+                     "psi", 1, mfp0, np.zeros(mfp0.nbdof()))
+        eta = eta[-mfp0.nbdof():]
+        cells = mfp0.basic_dof_from_cvid()
+        # One dof per cell: the dof of each cell, in the order of the ids.
+        ids = np.asarray(mesh.cvid())
+        values = np.array([eta[cells[0][cells[1][i]]]
+                           for i in range(len(ids))])
+        return ids, values
+
+
+def consistent_pressure(mass, nodes, force):
+    """The pressure at `nodes` whose consistent nodal forces are `force`:
+    M p = f with the arc's mass matrix restricted to them."""
+    import scipy.sparse
+    import scipy.sparse.linalg
+    size = mass.size()
+    matrix = scipy.sparse.csc_matrix(
+        (mass.csc_val(), *mass.csc_ind()[::-1]), shape=tuple(size))
+    sub = matrix[nodes][:, nodes].tocsc()
+    return scipy.sparse.linalg.spsolve(sub, force)
+
+
+def half_width(x, pressure, in_contact):
+    """The contact half-width as signorini measures it in 2D
+    (source/postprocessing/zone_edges.cc): from the last node in contact
+    towards the first open one along the arc (the nodes sorted by x), to
+    where p^2, extrapolated from the last two nodes in contact, vanishes."""
+    order = np.argsort(x)
+    x, pressure, in_contact = x[order], pressure[order], in_contact[order]
+    last = np.nonzero(in_contact)[0].max()
+    low = x[in_contact].min()
+    if last + 1 >= len(x) or last == 0 or not in_contact[last - 1]:
+        return x[last] - low
+    inner, inside, outside = x[last - 1], x[last], x[last + 1]
+    v_inner, v_inside = pressure[last - 1], pressure[last]
+    if not (v_inner > v_inside >= 0):
+        return inside - low
+    distance = v_inside ** 2 * (inside - inner) / \
+        (v_inner ** 2 - v_inside ** 2)
+    theta = min(1., distance / (outside - inside))
+    return inside + theta * (outside - inside) - low
+
+
+def refine(mesh, scene, ids, eta, fraction):
+    """Bank-refines the `fraction` of the cells with the largest
+    indicators, then moves the new nodes of the arc onto it."""
+    count = max(1, int(round(fraction * len(ids))))
+    chosen = ids[np.argsort(eta)[-count:]]
+    mesh.refine(chosen)
+    mesh.optimize_structure()
+    snap_arc(mesh, scene)
+
+
+def main():
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("scene", choices=["2d", "3d"])
+    parser.add_argument("--degree", type=int, choices=[1, 2], default=1)
+    parser.add_argument("--contact", choices=["nodal", "integral"],
+                        default="nodal")
+    parser.add_argument("--cycles", type=int, default=8)
+    parser.add_argument("--size", type=float, default=None,
+                        help="the first mesh's cell size [mm] (default: "
+                        "0.1 in 2D, 0.25 in 3D, twice that for P2)")
+    parser.add_argument("--fraction", type=float, default=0.3)
+    args = parser.parse_args()
+    gf.util("trace level", 0)
+    gf.util("warning level", 0)
+    scene = Scene(2 if args.scene == "2d" else 3)
+    size = args.size or (0.1 if scene.dim == 2 else 0.25) * args.degree
+    mesh = first_mesh(scene, size, args.degree)
+    print(",".join(COLUMNS), flush=True)
+    solver = None
+    for cycle in range(args.cycles):
+        if solver is None:
+            solver = Solver(scene, mesh, args.degree, args.contact)
+            # A rigid descent by Hertz's approach: the nodes near the
+            # contact point start inside the plane, in contact.
+            initial = np.zeros(solver.mfu.nbdof())
+            initial[scene.dim - 1::scene.dim] = \
+                -scene.a ** 2 / (2 * scene.radius)
+            iterations = solver.solve(initial)
+        else:
+            # The previous solution and pressure, on a copy of the mesh
+            # before it is refined, interpolated onto the refined one.
+            old_mesh = gf.Mesh("clone", mesh)
+            old_u = gf.MeshFem(old_mesh, scene.dim)
+            old_u.set_classical_fem(args.degree)
+            old_p = gf.MeshFem(old_mesh, 1)
+            old_p.set_classical_fem(args.degree)
+            assert old_u.nbdof() == solver.mfu.nbdof()
+            u, pressure = solver.model.variable("u"), solver.pressure
+            refine(mesh, scene, ids, eta, args.fraction)
+            solver = Solver(scene, mesh, args.degree, args.contact)
+            iterations = solver.solve(
+                gf.compute_interpolate_on(old_u, u, solver.mfu),
+                gf.compute_interpolate_on(old_p, pressure, solver.mfs))
+        p0, a, nodes, force, penetration = solver.measure()
+        ids, eta = solver.indicators()
+        row = [cycle, mesh.nbcvs(), solver.mfu.nbdof(), nodes, iterations,
+               time.perf_counter() - START, p0, a, p0 / scene.p0 - 1,
+               a / scene.a - 1, force, penetration]
+        print(",".join("%.10g" % value for value in row), flush=True)
+
+
+if __name__ == "__main__":
+    main()
