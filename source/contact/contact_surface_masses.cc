@@ -61,46 +61,41 @@ namespace signorini
     };
     std::vector<Vector<double>> cell_mass(n_obstacles, Vector<double>(n));
     std::vector<types::global_dof_index> dof_indices(n);
-    for (const auto &cell :
-         discretisation.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()))
-            {
-              fe_face_values.reinit(cell, f);
-              if (share_middles)
-                share_middles->reinit(cell, f);
-              if (n_obstacles == 1)
-                {
-                  cell_mass[0] = 0;
-                  for (unsigned int i = 0; i < n; ++i)
-                    for (const unsigned int q :
-                         fe_face_values.quadrature_point_indices())
-                      cell_mass[0](i) += fe_face_values.shape_value(i, q) *
-                                         fe_face_values.JxW(q) * weight(q);
-                }
-              else
-                {
-                  for (auto &m : cell_mass)
-                    m = 0;
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    {
-                      const unsigned int k =
-                        obstacle_set.facing(fe_face_values.quadrature_point(q),
-                                            fe_face_values.normal_vector(q));
-                      for (unsigned int i = 0; i < n; ++i)
-                        cell_mass[k](i) += fe_face_values.shape_value(i, q) *
-                                           fe_face_values.JxW(q) * weight(q);
-                    }
-                }
-              cell->get_dof_indices(dof_indices);
-              for (unsigned int k = 0; k < n_obstacles; ++k)
-                constraints.distribute_local_to_global(cell_mass[k],
-                                                       dof_indices,
-                                                       mass[k]);
-            }
+    for_each_owned_face(
+      discretisation, [&](const auto &cell, const unsigned int f) {
+        fe_face_values.reinit(cell, f);
+        if (share_middles)
+          share_middles->reinit(cell, f);
+        if (n_obstacles == 1)
+          {
+            cell_mass[0] = 0;
+            for (unsigned int i = 0; i < n; ++i)
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                cell_mass[0](i) += fe_face_values.shape_value(i, q) *
+                                   fe_face_values.JxW(q) * weight(q);
+          }
+        else
+          {
+            for (auto &m : cell_mass)
+              m = 0;
+            for (const unsigned int q :
+                 fe_face_values.quadrature_point_indices())
+              {
+                const unsigned int k =
+                  obstacle_set.facing(fe_face_values.quadrature_point(q),
+                                      fe_face_values.normal_vector(q));
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_mass[k](i) += fe_face_values.shape_value(i, q) *
+                                     fe_face_values.JxW(q) * weight(q);
+              }
+          }
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int k = 0; k < n_obstacles; ++k)
+          constraints.distribute_local_to_global(cell_mass[k],
+                                                 dof_indices,
+                                                 mass[k]);
+      });
     for (auto &m : mass)
       m.compress(VectorOperation::add);
     // A vertex that faces one obstacle carries the whole boundary around it,

@@ -181,7 +181,6 @@ namespace signorini
     std::unordered_map<types::global_dof_index, unsigned int> node_at;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       node_at[nodes[i].scalar_dof] = i;
-    const auto               &ids   = surface.contact_ids();
     const Function<dim>      *exact = reference.contact_pressure.get();
     const Quadrature<dim - 1> rule =
       discretisation.simplex() && dim == 3 ?
@@ -269,64 +268,55 @@ namespace signorini
     double              integral = 0., error_squared = 0., norm_squared = 0.;
     Tensor<1, dim>      resultant;
     std::vector<double> area(n_obstacles, 0.);
-    for (const auto &cell :
-         discretisation.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()))
-            {
-              fe_face_values.reinit(cell, f);
-              cell->get_dof_indices(dof_indices);
-              for (unsigned int c = 0; c < 2; ++c)
+    surface.for_each_owned_face(
+      discretisation, [&](const auto &cell, const unsigned int f) {
+        fe_face_values.reinit(cell, f);
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            corner_part = c == 1;
+            for (unsigned int k = 0; k < n_obstacles; ++k)
+              for (unsigned int i = 0; i < n; ++i)
                 {
-                  corner_part = c == 1;
-                  for (unsigned int k = 0; k < n_obstacles; ++k)
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        nodal[c][k][i] = nodal_value(dof_indices[i], k, false);
-                        indicator[c][k][i] =
-                          nodal_value(dof_indices[i], k, true);
-                        nodal_force[c][k][i] =
-                          nodal_force_density(dof_indices[i], k);
-                      }
+                  nodal[c][k][i]       = nodal_value(dof_indices[i], k, false);
+                  indicator[c][k][i]   = nodal_value(dof_indices[i], k, true);
+                  nodal_force[c][k][i] = nodal_force_density(dof_indices[i], k);
                 }
-              for (const unsigned int q :
-                   fe_face_values.quadrature_point_indices())
-                {
-                  const auto  &x = fe_face_values.quadrature_point(q);
-                  const double JxW =
-                    fe_face_values.JxW(q) * discretisation.weight(x);
-                  // At a corner, the point belongs to the obstacle it faces.
-                  const unsigned int facing =
-                    n_obstacles == 1 ?
-                      0 :
-                      obstacles.facing(x, fe_face_values.normal_vector(q));
-                  double         p_h = 0.;
-                  Tensor<1, dim> force_h;
-                  for (unsigned int k = 0; k < n_obstacles; ++k)
+          }
+        for (const unsigned int q : fe_face_values.quadrature_point_indices())
+          {
+            const auto  &x   = fe_face_values.quadrature_point(q);
+            const double JxW = fe_face_values.JxW(q) * discretisation.weight(x);
+            // At a corner, the point belongs to the obstacle it faces.
+            const unsigned int facing =
+              n_obstacles == 1 ?
+                0 :
+                obstacles.facing(x, fe_face_values.normal_vector(q));
+            double         p_h = 0.;
+            Tensor<1, dim> force_h;
+            for (unsigned int k = 0; k < n_obstacles; ++k)
+              {
+                double active_h = 0.;
+                for (unsigned int c = 0; c < (k == facing ? 2 : 1); ++c)
+                  for (unsigned int i = 0; i < n; ++i)
                     {
-                      double active_h = 0.;
-                      for (unsigned int c = 0; c < (k == facing ? 2 : 1); ++c)
-                        for (unsigned int i = 0; i < n; ++i)
-                          {
-                            const double phi = fe_face_values.shape_value(i, q);
-                            p_h += nodal[c][k][i] * phi;
-                            active_h += indicator[c][k][i] * phi;
-                            force_h += nodal_force[c][k][i] * phi;
-                          }
-                      area[k] += active_h * JxW;
+                      const double phi = fe_face_values.shape_value(i, q);
+                      p_h += nodal[c][k][i] * phi;
+                      active_h += indicator[c][k][i] * phi;
+                      force_h += nodal_force[c][k][i] * phi;
                     }
-                  integral += p_h * JxW;
-                  resultant += force_h * JxW;
-                  if (exact)
-                    {
-                      const double p = exact->value(x);
-                      error_squared += (p_h - p) * (p_h - p) * JxW;
-                      norm_squared += p * p * JxW;
-                    }
-                }
-            }
+                area[k] += active_h * JxW;
+              }
+            integral += p_h * JxW;
+            resultant += force_h * JxW;
+            if (exact)
+              {
+                const double p = exact->value(x);
+                error_squared += (p_h - p) * (p_h - p) * JxW;
+                norm_squared += p * p * JxW;
+              }
+          }
+      });
     zone.integrated_pressure = Utilities::MPI::sum(integral, comm);
     zone.pressure_resultant  = Utilities::MPI::sum(resultant, comm);
     if (tangential)

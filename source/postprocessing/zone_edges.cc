@@ -77,7 +77,6 @@ namespace signorini
     // a face's ends (at degree 2 each end with its mid-node); in 3D the
     // lines of a face's grid of nodes (its edges; at degree 2 also from
     // the edges' mid-nodes through the centre).
-    const auto &ids  = surface.contact_ids();
     const auto &fe   = discretisation.fe();
     const auto  pair = [&](const types::global_dof_index a,
                           const types::global_dof_index b) {
