@@ -65,7 +65,8 @@ namespace signorini
             Utilities::MPI::sum(counts,
                                 discretisation.mpi_communicator(),
                                 counts);
-            matrix_free = counts[0] >= 0.5 * counts[1];
+            matrix_free =
+              counts[0] >= 0.5 * counts[1] || discretisation.degree() > 1;
           }
         chosen = make(matrix_free);
       }

@@ -48,9 +48,12 @@ namespace signorini
     }
 #endif
 
-    /** y = K x, K stored by columns: a column's n entries times x_j. */
+    /** y = K x, K stored by columns: a column's n entries times x_j.
+     * Always inlined, so that each kernel's copy compiles it for its own
+     * instruction set (left to itself, the compiler calls one SSE2 copy at
+     * n = 81). */
     template <unsigned int n, typename Number>
-    inline void
+    inline __attribute__((always_inline)) void
     apply_columns(const Number *__restrict K,
                   const Number *__restrict x,
                   Number *__restrict y)
@@ -65,8 +68,27 @@ namespace signorini
         y[i] = sum[i];
     }
 
-// The kernels of a quadrilateral (n = 8) and a hexahedron (n = 24) in
-// Number: plain functions, which target_clones copies per instruction set.
+    // The kernels of a quadrilateral (n = 8) and a hexahedron (n = 24) in
+    // Number: plain functions, which target_clones copies per instruction set.
+    /** apply_columns() of a matrix whose columns are padded to @p stride
+     * entries (zeros): the sums then fill whole registers, where 81 rows
+     * left the compiler to scalar code. */
+    template <unsigned int n, unsigned int stride, typename Number>
+    inline __attribute__((always_inline)) void
+    apply_padded_columns(const Number *__restrict K,
+                         const Number *__restrict x,
+                         Number *__restrict y)
+    {
+      Number sum[stride];
+      for (unsigned int i = 0; i < stride; ++i)
+        sum[i] = K[i] * x[0];
+      for (unsigned int j = 1; j < n; ++j)
+        for (unsigned int i = 0; i < stride; ++i)
+          sum[i] += K[j * stride + i] * x[j];
+      for (unsigned int i = 0; i < n; ++i)
+        y[i] = sum[i];
+    }
+
 #define SIGNORINI_CELL_KERNELS(Number)                                       \
   SIGNORINI_WIDE_KERNEL void apply_quadrilateral(const Number *__restrict K, \
                                                  const Number *__restrict x, \
@@ -79,12 +101,33 @@ namespace signorini
                                               Number *__restrict y)          \
   {                                                                          \
     apply_columns<24>(K, x, y);                                              \
+  }                                                                          \
+  SIGNORINI_WIDE_KERNEL void apply_quadrilateral_q2(                         \
+    const Number *__restrict K,                                              \
+    const Number *__restrict x,                                              \
+    Number *__restrict y)                                                    \
+  {                                                                          \
+    apply_padded_columns<18, 24>(K, x, y);                                   \
+  }                                                                          \
+  SIGNORINI_WIDE_KERNEL void apply_hexahedron_q2(const Number *__restrict K, \
+                                                 const Number *__restrict x, \
+                                                 Number *__restrict y)       \
+  {                                                                          \
+    apply_padded_columns<81, 96>(K, x, y);                                   \
   }
 
     SIGNORINI_CELL_KERNELS(double)
     // Single precision: twice the entries per register, half the bytes.
     SIGNORINI_CELL_KERNELS(float)
 #undef SIGNORINI_CELL_KERNELS
+
+    /** The padded length of a column of n entries (see
+     * apply_padded_columns()). */
+    unsigned int
+    padded(const unsigned int n)
+    {
+      return n == 18 ? 24 : n == 81 ? 96 : n;
+    }
 
     template <typename Number>
     void
@@ -112,6 +155,10 @@ namespace signorini
         apply_hexahedron(K, x, y);
       else if (n == 8)
         apply_quadrilateral(K, x, y);
+      else if (n == 81)
+        apply_hexahedron_q2(K, x, y);
+      else if (n == 18)
+        apply_quadrilateral_q2(K, x, y);
       else
         apply_any(n, K, x, y);
     }
@@ -130,7 +177,8 @@ namespace signorini
   CellMatrices::reinit(const unsigned int size)
   {
     clear();
-    n = size;
+    n      = size;
+    stride = padded(n);
   }
 
   void
@@ -157,15 +205,23 @@ namespace signorini
       return none;
     const unsigned int index = index_of.size();
     index_of.emplace(key, index);
-    entries.insert(entries.end(), columns.begin(), columns.end());
-    single_entries.insert(single_entries.end(), columns.begin(), columns.end());
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        entries.insert(entries.end(),
+                       columns.begin() + j * n,
+                       columns.begin() + (j + 1) * n);
+        entries.resize(entries.size() + stride - n, 0.);
+      }
+    single_entries.insert(single_entries.end(),
+                          entries.end() - std::size_t(n) * stride,
+                          entries.end());
     return index;
   }
 
   const double *
   CellMatrices::matrix(const unsigned int index) const
   {
-    return entries.data() + std::size_t(index) * n * n;
+    return entries.data() + std::size_t(index) * n * stride;
   }
 
   void
@@ -179,6 +235,9 @@ namespace signorini
   void
   CellMatrices::apply(const unsigned int index, const float *x, float *y) const
   {
-    apply_matrix(n, single_entries.data() + std::size_t(index) * n * n, x, y);
+    apply_matrix(n,
+                 single_entries.data() + std::size_t(index) * n * stride,
+                 x,
+                 y);
   }
 } // namespace signorini

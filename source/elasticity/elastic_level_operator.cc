@@ -28,6 +28,10 @@ namespace signorini
   {
     constraints = &given;
     dof_handler = &dofs;
+    fe_degree   = dofs.get_fe().degree;
+    n_cell_dofs = dofs.get_fe().n_dofs_per_cell();
+    AssertThrow(fe_degree == 1 || fe_degree == 2,
+                ExcMessage("the matrix-free operator is of degree 1 or 2"));
     std::vector<CellIterator> cells;
     by_vertices = setup_by_vertices(mapping, cells);
     if (by_vertices)
@@ -38,9 +42,12 @@ namespace signorini
         data.tasks_parallel_scheme =
           MatrixFree<dim, double>::AdditionalData::none;
         data.mapping_update_flags = update_gradients | update_JxW_values;
-        matrix_free.reinit(mapping, dofs, given, QGauss<1>(2), data);
+        matrix_free.reinit(
+          mapping, dofs, given, QGauss<1>(fe_degree + 1), data);
         partitioner = matrix_free.get_vector_partitioner();
-        setup_cell_matrices();
+        with_degree([&](const auto degree) {
+          setup_cell_matrices<decltype(degree)::value>();
+        });
         for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
           cells.push_back(matrix_free.get_cell_iterator(cell, 0));
       }
@@ -49,7 +56,9 @@ namespace signorini
     for (const auto i : dofs.locally_owned_dofs())
       if (given.is_constrained(i))
         constrained.push_back(partitioner->global_to_local(i));
-    compute_diagonal(cells);
+    with_degree([&](const auto degree) {
+      compute_diagonal<decltype(degree)::value>(cells);
+    });
     initialize_dof_vector(projected);
     set_contact({}, {});
   }
@@ -83,12 +92,24 @@ namespace signorini
   }
 
   template <int dim>
+  template <typename F>
+  void
+  ElasticLevelOperator<dim>::with_degree(const F &f) const
+  {
+    if (fe_degree == 2)
+      f(std::integral_constant<int, 2>());
+    else
+      f(std::integral_constant<int, 1>());
+  }
+
+  template <int dim>
+  template <int degree>
   void
   ElasticLevelOperator<dim>::quadrature_matrix(
-    Evaluation          &phi,
+    Evaluation<degree>  &phi,
     std::vector<double> &columns) const
   {
-    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    constexpr unsigned int n = Evaluation<degree>::static_dofs_per_cell;
     for (unsigned int j = 0; j < n; ++j)
       {
         for (unsigned int i = 0; i < n; ++i)
@@ -100,16 +121,18 @@ namespace signorini
   }
 
   template <int dim>
+  template <int degree>
   void
   ElasticLevelOperator<dim>::setup_cell_matrices()
   {
+    using CellEvaluation = Evaluation<degree>;
     static_assert(VectorizedArray<double>::size() == 1 &&
                     sizeof(VectorizedArray<double>) == sizeof(double),
                   "a cell batch of one cell (Debian's deal.II)");
-    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    constexpr unsigned int n = CellEvaluation::static_dofs_per_cell;
     cell_matrices.reinit(n);
     matrix_of_cell.assign(matrix_free.n_cell_batches(), CellMatrices::none);
-    Evaluation          phi(matrix_free);
+    CellEvaluation      phi(matrix_free);
     CellMatrices::Key   key(dim * dim);
     std::vector<double> columns(n * n);
     for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
@@ -132,16 +155,18 @@ namespace signorini
   }
 
   template <int dim>
+  template <int degree>
   void
-  ElasticLevelOperator<dim>::apply_cell(Evaluation &phi) const
+  ElasticLevelOperator<dim>::apply_cell(Evaluation<degree> &phi) const
   {
+    using CellEvaluation     = Evaluation<degree>;
     const unsigned int index = matrix_of_cell[phi.get_current_cell_index()];
     if (index == CellMatrices::none)
       {
         apply_at_quadrature_points(phi);
         return;
       }
-    constexpr unsigned int n = Evaluation::static_dofs_per_cell;
+    constexpr unsigned int n = CellEvaluation::static_dofs_per_cell;
     double                 x[n];
     double *const          values = &phi.begin_dof_values()[0][0];
     std::copy(values, values + n, x);
@@ -149,8 +174,10 @@ namespace signorini
   }
 
   template <int dim>
+  template <int degree>
   void
-  ElasticLevelOperator<dim>::apply_at_quadrature_points(Evaluation &phi) const
+  ElasticLevelOperator<dim>::apply_at_quadrature_points(
+    Evaluation<degree> &phi) const
   {
     phi.evaluate(EvaluationFlags::gradients);
     for (unsigned int q = 0; q < phi.n_q_points; ++q)
@@ -166,7 +193,7 @@ namespace signorini
   }
 
   template <int dim>
-  template <bool as_given, typename CellNumber>
+  template <int degree, bool as_given, typename CellNumber>
   void
   ElasticLevelOperator<dim>::apply_cells(
     const MatrixFree<dim, double>               &data,
@@ -174,11 +201,12 @@ namespace signorini
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
   {
+    using CellEvaluation = Evaluation<degree>;
     // Only the cells without a shape matrix need FEEvaluation (none when
     // the operator was set up by_vertices, without a MatrixFree).
-    std::unique_ptr<Evaluation> phi;
-    constexpr unsigned int      n = Evaluation::static_dofs_per_cell;
-    CellNumber                  x[n], y[n];
+    std::unique_ptr<CellEvaluation> phi;
+    constexpr unsigned int          n = CellEvaluation::static_dofs_per_cell;
+    CellNumber                      x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
       if (direct[cell])
         {
@@ -236,7 +264,7 @@ namespace signorini
       else
         {
           if (!phi)
-            phi = std::make_unique<Evaluation>(data);
+            phi = std::make_unique<CellEvaluation>(data);
           phi->reinit(cell);
           if (as_given)
             phi->read_dof_values_plain(src);
@@ -259,10 +287,10 @@ namespace signorini
     if (!had_ghosts)
       src.update_ghost_values();
     dst = 0.;
-    apply_cells<as_given, CellNumber>(matrix_free,
-                                      dst,
-                                      src,
-                                      {0, matrix_of_cell.size()});
+    with_degree([&](const auto degree) {
+      apply_cells<decltype(degree)::value, as_given, CellNumber>(
+        matrix_free, dst, src, {0, matrix_of_cell.size()});
+    });
     dst.compress(VectorOperation::add);
     if (!had_ghosts)
       src.zero_out_ghost_values();
@@ -361,16 +389,18 @@ namespace signorini
   }
 
   template <int dim>
+  template <int degree>
   void
   ElasticLevelOperator<dim>::compute_diagonal(
     const std::vector<CellIterator> &cells)
   {
+    using CellEvaluation = Evaluation<degree>;
     // The diagonal of C^T K C, C the constraints: a cell without
     // constrained dofs adds its matrix's diagonal; a cell with some adds
     // v^T K v for each dof g its dofs depend on, v_i the weight of g in
     // local dof i (1 for g itself, a hanging node's weight, 0 for a
     // Dirichlet dof).
-    constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
+    constexpr unsigned int n        = CellEvaluation::static_dofs_per_cell;
     const auto             position = evaluation_positions();
     initialize_dof_vector(diagonal_without_contact);
     cell_dofs.assign(cells.size() * n, 0);
@@ -379,7 +409,7 @@ namespace signorini
     line_entries.clear();
     line_dof.clear();
     std::unordered_map<types::global_dof_index, unsigned int> line_of;
-    std::unique_ptr<Evaluation>                               phi;
+    std::unique_ptr<CellEvaluation>                           phi;
     std::vector<double>                                       columns(n * n);
     std::vector<types::global_dof_index>                      indices(n);
     std::vector<std::pair<types::global_dof_index,
@@ -387,13 +417,18 @@ namespace signorini
       depends;
     for (unsigned int cell = 0; cell < cells.size(); ++cell)
       {
-        const double *K = nullptr;
+        // K by columns, a column's entries `stride` apart.
+        const double *K      = nullptr;
+        unsigned int  stride = n;
         if (matrix_of_cell[cell] != CellMatrices::none)
-          K = cell_matrices.matrix(matrix_of_cell[cell]);
+          {
+            K      = cell_matrices.matrix(matrix_of_cell[cell]);
+            stride = cell_matrices.column_stride();
+          }
         else
           {
             if (!phi)
-              phi = std::make_unique<Evaluation>(matrix_free);
+              phi = std::make_unique<CellEvaluation>(matrix_free);
             phi->reinit(cell);
             quadrature_matrix(*phi, columns);
             K = columns.data();
@@ -435,7 +470,7 @@ namespace signorini
           {
             for (unsigned int k = 0; k < n; ++k)
               diagonal_without_contact(indices[k]) +=
-                K[position[k] * n + position[k]];
+                K[position[k] * stride + position[k]];
             continue;
           }
         depends.clear();
@@ -462,7 +497,7 @@ namespace signorini
             double sum = 0.;
             for (const auto &[a, wa] : weights)
               for (const auto &[b, wb] : weights)
-                sum += wa * wb * K[b * n + a];
+                sum += wa * wb * K[b * stride + a];
             diagonal_without_contact(dof) += sum;
           }
       }
@@ -476,9 +511,9 @@ namespace signorini
   void
   ElasticLevelOperator<dim>::compact_cell_dofs()
   {
-    constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
-    constexpr unsigned int n_vertex = n / dim;
-    const unsigned int     n_cells  = direct.size();
+    const unsigned int n        = n_cell_dofs;
+    const unsigned int n_vertex = n / dim;
+    const unsigned int n_cells  = direct.size();
     // The resolved cells' n entries (not those of the cells without a
     // shape matrix: they go through FEEvaluation), in order, in
     // resolved_dofs; their first entry in cell_dofs says where.
@@ -613,9 +648,9 @@ namespace signorini
     if (by_vertices)
       {
         // The cells' matrices, in the mesh's order as matrix_of_cell.
-        constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
-        const auto             position = evaluation_positions();
-        FullMatrix<double>     cell_matrix(n, n);
+        const unsigned int                   n        = n_cell_dofs;
+        const auto                           position = evaluation_positions();
+        FullMatrix<double>                   cell_matrix(n, n);
         std::vector<types::global_dof_index> indices(n);
         unsigned int                         c = 0;
         for (const auto &cell : dofs.active_cell_iterators())
@@ -624,14 +659,23 @@ namespace signorini
               const double *K = cell_matrices.matrix(matrix_of_cell[c++]);
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j < n; ++j)
-                  cell_matrix(i, j) = K[position[j] * n + position[i]];
+                  cell_matrix(i, j) =
+                    K[position[j] * cell_matrices.column_stride() +
+                      position[i]];
               cell->get_dof_indices(indices);
               lines.distribute_local_to_global(cell_matrix, indices, matrix);
             }
       }
     else
-      MatrixFreeTools::compute_matrix(
-        matrix_free, lines, matrix, &ElasticLevelOperator::apply_cell, this);
+      with_degree([&](const auto degree) {
+        constexpr int p = decltype(degree)::value;
+        MatrixFreeTools::compute_matrix(
+          matrix_free,
+          lines,
+          matrix,
+          &ElasticLevelOperator::template apply_cell<p>,
+          this);
+      });
     // The contact of a coarse level: nodal blocks, no held lines.
     for (const auto &[dofs_of, stiffness] : symmetric_blocks)
       for (unsigned int a = 0; a < dim; ++a)

@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <signorini/discretisation/discretisation.h>
 #include <signorini/elasticity/cell_stiffness.h>
 #include <signorini/elasticity/elastic_level_operator.h>
 
@@ -13,17 +14,26 @@ namespace signorini
   using namespace dealii;
 
   template <int dim>
-  std::array<unsigned int,
-             ElasticLevelOperator<dim>::Evaluation::static_dofs_per_cell>
+  std::vector<unsigned int>
   ElasticLevelOperator<dim>::evaluation_positions() const
   {
-    constexpr unsigned int      n  = Evaluation::static_dofs_per_cell;
-    const auto                 &fe = dof_handler->get_fe();
-    std::array<unsigned int, n> position;
+    // A node's lexicographic index from its unit support point: the sum of
+    // x_d * degree * (degree + 1)^d.
+    const auto        &fe     = dof_handler->get_fe();
+    const unsigned int n      = fe.n_dofs_per_cell();
+    const auto        &points = fe.base_element(0).get_unit_support_points();
+    std::vector<unsigned int> position(n);
     for (unsigned int k = 0; k < n; ++k)
       {
         const auto [component, node] = fe.system_to_component_index(k);
-        position[k]                  = component * (n / dim) + node;
+        unsigned int lexicographic = 0, stride = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lexicographic += stride * static_cast<unsigned int>(std::lround(
+                                        points[node][d] * fe.degree));
+            stride *= fe.degree + 1;
+          }
+        position[k] = component * (n / dim) + lexicographic;
       }
     return position;
   }
@@ -33,9 +43,9 @@ namespace signorini
   ElasticLevelOperator<dim>::setup_by_vertices(const Mapping<dim> &mapping,
                                                std::vector<CellIterator> &cells)
   {
-    constexpr unsigned int n        = Evaluation::static_dofs_per_cell;
-    const auto            &dofs     = *dof_handler;
-    const auto             position = evaluation_positions();
+    const unsigned int n        = n_cell_dofs;
+    const auto        &dofs     = *dof_handler;
+    const auto         position = evaluation_positions();
     cells.clear();
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -49,7 +59,7 @@ namespace signorini
     // so that cells equal up to round-off share a matrix.
     FEValues<dim>       fe_values(mapping,
                             dofs.get_fe(),
-                            QGauss<dim>(2),
+                            QGauss<dim>(fe_degree + 1),
                             elastic_update_flags(material));
     CellStiffness<dim>  stiffness(material);
     FullMatrix<double>  cell_matrix(n, n);
@@ -73,6 +83,9 @@ namespace signorini
                   expected[a] += jacobian[a][d];
             all = all && expected.distance(cell->vertex(v)) <= tolerance;
           }
+        // Above degree 1 the mapping follows the manifolds: a cell on a
+        // curved one is not the image of its vertices.
+        all = all && (fe_degree == 1 || on_flat_manifolds(cell));
         if (!all)
           break;
         const Tensor<2, dim> inverse = invert(jacobian);
@@ -133,9 +146,9 @@ namespace signorini
     return true;
   }
 
-  template std::array<unsigned int, 8>
+  template std::vector<unsigned int>
   ElasticLevelOperator<2>::evaluation_positions() const;
-  template std::array<unsigned int, 24>
+  template std::vector<unsigned int>
   ElasticLevelOperator<3>::evaluation_positions() const;
   template bool
   ElasticLevelOperator<2>::setup_by_vertices(const Mapping<2> &,

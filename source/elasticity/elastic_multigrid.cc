@@ -1,5 +1,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <signorini/base/failures.h>
@@ -115,14 +117,20 @@ namespace signorini
     meshes                = coarsening_sequence(fine_dofs.get_triangulation());
     // The finest is the fine operator's own mesh (a reference: dropped).
     meshes.back().reset();
-    const unsigned int top = meshes.size() - 1;
+    // Above degree 1, the level below the fine one is Q1 on the same mesh
+    // (a p-step), and the coarser ones Q1 too.
+    const bool          raised = fine_dofs.get_fe().degree > 1;
+    const FESystem<dim> linear(FE_Q<dim>(1), dim);
+    const auto         &level_fe = raised ? linear : fine_dofs.get_fe();
+    const unsigned int  top      = meshes.size() - (raised ? 0 : 1);
 
     constraints.resize(0, top);
     operators.resize(0, top);
     for (unsigned int level = 0; level < top; ++level)
       {
-        dofs.push_back(std::make_unique<DoFHandler<dim>>(*meshes[level]));
-        dofs.back()->distribute_dofs(fine_dofs.get_fe());
+        dofs.push_back(std::make_unique<DoFHandler<dim>>(
+          meshes[level] ? *meshes[level] : fine_dofs.get_triangulation()));
+        dofs.back()->distribute_dofs(level_fe);
         IndexSet relevant;
         DoFTools::extract_locally_relevant_dofs(*dofs.back(), relevant);
         auto &level_constraints = constraints[level];

@@ -42,8 +42,7 @@ namespace signorini
           return std::make_unique<AutomaticOperator<dim>>(
             discretisation,
             !material.axisymmetric() &&
-              !material.template mean_dilatation<dim>(false) &&
-              discretisation.degree() == 1,
+              !material.template mean_dilatation<dim>(false),
             make);
         default:
           return make(false);

@@ -1,5 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_tools.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <signorini/elasticity/level_transfer.h>
 
@@ -54,10 +56,10 @@ namespace signorini
     initialize     = initialize_vector;
     const auto top = dofs.size() - 1;
 
-    const auto &fe = dofs[top]->get_fe();
-    dofs_per_cell  = fe.n_dofs_per_cell();
-    embeddings.reinit(dofs_per_cell);
-    const unsigned int     n        = dofs_per_cell;
+    // The geometric steps are between levels of the coarsest's element.
+    const auto        &fe = dofs[0]->get_fe();
+    const unsigned int n  = fe.n_dofs_per_cell();
+    embeddings.reinit(n);
     constexpr unsigned int children = GeometryInfo<dim>::max_children_per_cell;
     std::vector<double>    columns(n * n);
     for (const bool transpose : {false, true})
@@ -72,6 +74,25 @@ namespace signorini
         }
 
     cellwise.resize(top + 1);
+    for (unsigned int level = 1; level <= top; ++level)
+      {
+        auto       &pair   = cellwise[level];
+        const auto &coarse = dofs[level - 1]->get_fe();
+        const auto &finer  = dofs[level]->get_fe();
+        pair.n_fine        = finer.n_dofs_per_cell();
+        pair.n_coarse      = coarse.n_dofs_per_cell();
+        AssertThrow(pair.n_fine <= max_cell_dofs,
+                    ExcMessage("a level transfer of degree above 2"));
+        if (finer.degree != coarse.degree)
+          {
+            FullMatrix<double> interpolation(pair.n_fine, pair.n_coarse);
+            FETools::get_interpolation_matrix(coarse, finer, interpolation);
+            for (unsigned int i = 0; i < pair.n_fine; ++i)
+              for (unsigned int j = 0; j < pair.n_coarse; ++j)
+                if (std::abs(interpolation(i, j)) > 1e-14)
+                  pair.raise.push_back({i, j, interpolation(i, j)});
+          }
+      }
     bool nested = true;
     for (unsigned int level = 1; level <= top; ++level)
       nested = nested && setup_pair(level,
@@ -86,10 +107,16 @@ namespace signorini
     by_dealii = true;
     distributed.resize(0, top);
     for (unsigned int level = 1; level <= top; ++level)
-      distributed[level].reinit_geometric_transfer(*dofs[level],
-                                                   *dofs[level - 1],
-                                                   *constraints[level],
-                                                   *constraints[level - 1]);
+      if (dofs[level]->get_fe().degree != dofs[level - 1]->get_fe().degree)
+        distributed[level].reinit_polynomial_transfer(*dofs[level],
+                                                      *dofs[level - 1],
+                                                      *constraints[level],
+                                                      *constraints[level - 1]);
+      else
+        distributed[level].reinit_geometric_transfer(*dofs[level],
+                                                     *dofs[level - 1],
+                                                     *constraints[level],
+                                                     *constraints[level - 1]);
   }
 
   template <int dim>
@@ -102,8 +129,8 @@ namespace signorini
     const AffineConstraints<double> &fine_constraints)
   {
     const MPI_Comm     comm = fine.get_communicator();
-    const unsigned int n    = dofs_per_cell;
     auto              &pair = cellwise[level];
+    const unsigned int n    = pair.n_coarse;
     VectorType         fine_vector;
     initialize(level, fine_vector);
     const auto &fine_partitioner = *fine_vector.get_partitioner();
@@ -112,7 +139,7 @@ namespace signorini
     // The owned finer cells; their coarse cells' dofs where this process
     // has those cells, else asked of the others below.
     std::vector<types::global_dof_index> coarse_indices;
-    std::vector<types::global_dof_index> indices(n);
+    std::vector<types::global_dof_index> indices(n), fine_indices(pair.n_fine);
     std::vector<CellId::binary_type>     asked;
     std::vector<unsigned int>            asked_for;
     bool                                 consistent = true;
@@ -136,14 +163,14 @@ namespace signorini
     unsigned int n_cells = 0;
     for (const auto &cell : fine.active_cell_iterators())
       n_cells += cell->is_locally_owned() ? 1 : 0;
-    pair.fine_dofs.reserve(n_cells * n);
+    pair.fine_dofs.reserve(n_cells * pair.n_fine);
     pair.embedding.reserve(n_cells);
     coarse_indices.reserve(n_cells * n);
     for (const auto &cell : fine.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell->get_dof_indices(indices);
-          for (const auto index : indices)
+          cell->get_dof_indices(fine_indices);
+          for (const auto index : fine_indices)
             pair.fine_dofs.push_back(fine_partitioner.in_local_range(index) ?
                                        fine_partitioner.global_to_local(index) :
                                        none);
@@ -312,13 +339,13 @@ namespace signorini
       }
     coarse.update_ghost_values();
 
-    const unsigned int n = dofs_per_cell;
-    double             x[3 * 8], y[3 * 8];
+    const unsigned int n = pair.n_coarse, n_fine = pair.n_fine;
+    double             x[max_cell_dofs], y[max_cell_dofs];
     std::size_t        next = 0;
     for (unsigned int c = 0; c < pair.embedding.size(); ++c)
       {
         const unsigned int  embedding = pair.embedding[c] & ~new_patch;
-        const unsigned int *fine_dofs = &pair.fine_dofs[c * n];
+        const unsigned int *fine_dofs = &pair.fine_dofs[c * n_fine];
         if (pair.embedding[c] & new_patch)
           {
             for (unsigned int i = 0; i < n; ++i)
@@ -326,12 +353,20 @@ namespace signorini
             next += n;
           }
         const double *values = x;
-        if (embedding != identity)
+        if (!pair.raise.empty())
+          {
+            for (unsigned int i = 0; i < n_fine; ++i)
+              y[i] = 0.;
+            for (const auto &[i, j, weight] : pair.raise)
+              y[i] += weight * x[j];
+            values = y;
+          }
+        else if (embedding != identity)
           {
             embeddings.apply(embedding, x, y);
             values = y;
           }
-        for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int i = 0; i < n_fine; ++i)
           if (fine_dofs[i] != none)
             dst.local_element(fine_dofs[i]) = values[i];
       }
@@ -355,26 +390,34 @@ namespace signorini
     auto       &coarse = pair.coarse_values;
     coarse             = 0.;
     coarse.zero_out_ghost_values();
-    const unsigned int     n        = dofs_per_cell;
+    const unsigned int     n = pair.n_coarse, n_fine = pair.n_fine;
     constexpr unsigned int children = GeometryInfo<dim>::max_children_per_cell;
-    double                 x[3 * 8], y[3 * 8];
+    double                 x[max_cell_dofs], y[max_cell_dofs];
     const unsigned int    *coarse_dofs = nullptr;
     std::size_t            next        = 0;
     for (unsigned int c = 0; c < pair.embedding.size(); ++c)
       {
         const unsigned int  embedding = pair.embedding[c] & ~new_patch;
-        const unsigned int *fine_dofs = &pair.fine_dofs[c * n];
+        const unsigned int *fine_dofs = &pair.fine_dofs[c * n_fine];
         if (pair.embedding[c] & new_patch)
           {
             coarse_dofs = &pair.coarse_dofs[next];
             next += n;
           }
-        for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int i = 0; i < n_fine; ++i)
           x[i] = fine_dofs[i] == none ? 0. :
                                         src.local_element(fine_dofs[i]) *
                                           pair.fine_weights[fine_dofs[i]];
         const double *values = x;
-        if (embedding != identity)
+        if (!pair.raise.empty())
+          {
+            for (unsigned int j = 0; j < n; ++j)
+              y[j] = 0.;
+            for (const auto &[i, j, weight] : pair.raise)
+              y[j] += weight * x[i];
+            values = y;
+          }
+        else if (embedding != identity)
           {
             embeddings.apply(embedding + children, x, y);
             values = y;

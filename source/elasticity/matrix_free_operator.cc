@@ -84,10 +84,11 @@ namespace signorini
   MatrixFreeOperator<dim>::reinit()
   {
     if (discretisation.simplex())
-      throw InputError("Linear solver/Type",
-                       "matrix-free needs quadrilaterals or hexahedra (Q1); "
-                       "the mesh has triangles or tetrahedra: use amg cg or "
-                       "direct");
+      throw InputError(
+        "Linear solver/Type",
+        "matrix-free needs quadrilaterals or hexahedra (Q1, Q2); "
+        "the mesh has triangles or tetrahedra: use amg cg or "
+        "direct");
     release();
     fallback.reset();
     load_vector.reinit(discretisation.locally_owned_dofs(),

@@ -163,10 +163,6 @@ namespace signorini
                            "point; the cell mean (Material/Volumetric strain, "
                            "automatic from Poisson's ratio 0.4 on) needs amg "
                            "cg or direct");
-        if (geometry.element_degree > 1)
-          throw InputError("Linear solver/Type",
-                           "matrix-free evaluates degree 1 so far; Geometry/"
-                           "Element degree = 2 needs amg cg or direct");
       }
 
     std::ostringstream printed;

@@ -27,7 +27,8 @@ namespace signorini
 
     static constexpr unsigned int none = static_cast<unsigned int>(-1);
 
-    /** Empty, for matrices of size @p n (8 in 2D, 24 in 3D). */
+    /** Empty, for matrices of size @p n (Q1: 8 in 2D, 24 in 3D; Q2: 18,
+     * 81). */
     void
     reinit(const unsigned int n);
 
@@ -43,9 +44,18 @@ namespace signorini
     unsigned int
     add(const Key &key, const std::vector<double> &columns);
 
-    /** The matrix @p index, by columns (n x n). */
+    /** The matrix @p index, by columns (n columns of stride() entries,
+     * the first n of each the column's). */
     const double *
     matrix(const unsigned int index) const;
+
+    /** The length of a stored column: n, padded with zeros to whole
+     * registers for Q2 (24 for n = 18, 96 for n = 81). */
+    unsigned int
+    column_stride() const
+    {
+      return stride;
+    }
 
     /** y = K_index x (x and y of size n, not overlapping). */
     void
@@ -61,7 +71,8 @@ namespace signorini
     static constexpr unsigned int max_matrices = 512;
 
   private:
-    unsigned int                n = 0;
+    unsigned int                n      = 0;
+    unsigned int                stride = 0;
     std::map<Key, unsigned int> index_of;
     std::vector<double>         entries;
     /** The same entries rounded to float. */

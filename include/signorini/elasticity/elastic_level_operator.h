@@ -21,7 +21,8 @@
 namespace signorini
 {
   /**
-   * The stiffness operator of Q1 elasticity on one mesh, evaluated cell by
+   * The stiffness operator of Q1 or Q2 elasticity (the degree of the
+   * DoFHandler's element) on one mesh, evaluated cell by
    * cell with deal.II's MatrixFree (vectorised over cells, any number of
    * processes): the integral of eps(v) : sigma(u) with the isotropic law of
    * Material (plane strain, plane stress or 3D, volumetric strain at every
@@ -57,7 +58,11 @@ namespace signorini
   public:
     using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
     using value_type = double;
-    using Evaluation = dealii::FEEvaluation<dim, 1, 2, dim, double>;
+    /** A cell's evaluation at degree @p degree (Gauss points, degree + 1
+     * per direction). */
+    template <int degree>
+    using Evaluation =
+      dealii::FEEvaluation<dim, degree, degree + 1, dim, double>;
 
     /** A held dof and the dofs of its vertex it is solved from (global
      * indices, all owned here). */
@@ -171,6 +176,11 @@ namespace signorini
     get_dof_handler() const;
 
   private:
+    /** Calls @p f with std::integral_constant<int, the element's degree>. */
+    template <typename F>
+    void
+    with_degree(const F &f) const;
+
     /** dst = operator * src, the shape matrices applied in CellNumber:
      * the Newton system's (T^T A P, whole blocks) if @p newton, else the
      * symmetric one's (P^T A P, the blocks' symmetric parts). */
@@ -180,21 +190,26 @@ namespace signorini
 
     /** The cell's stiffness times its dof values (in place): its shape's
      * matrix where it has one, else apply_at_quadrature_points(). */
+    template <int degree>
     void
-    apply_cell(Evaluation &phi) const;
+    apply_cell(Evaluation<degree> &phi) const;
 
     /** The stress of a cell's quadrature points, integrated. */
+    template <int degree>
     void
-    apply_at_quadrature_points(Evaluation &phi) const;
+    apply_at_quadrature_points(Evaluation<degree> &phi) const;
 
     /** The stiffness of @p phi's cell by columns (n x n), from the
      * quadrature points. */
+    template <int degree>
     void
-    quadrature_matrix(Evaluation &phi, std::vector<double> &columns) const;
+    quadrature_matrix(Evaluation<degree>  &phi,
+                      std::vector<double> &columns) const;
 
     using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
 
     /** The matrices of the cells with an affine mapping, one per shape. */
+    template <int degree>
     void
     setup_cell_matrices();
 
@@ -209,8 +224,8 @@ namespace signorini
                       std::vector<CellIterator>  &cells);
 
     /** The FE's local dof k at FEEvaluation's position (component by
-     * component, Q1's nodes lexicographic as its vertices). */
-    std::array<unsigned int, Evaluation::static_dofs_per_cell>
+     * component, the nodes lexicographic: Q1's as its vertices). */
+    std::vector<unsigned int>
     evaluation_positions() const;
 
     /** dst += K src on @p cells: the `direct` cells by their matrix, the
@@ -218,7 +233,7 @@ namespace signorini
      * @p as_given), the others through FEEvaluation, which reads @p src with
      * the constraints resolved, or @p as_given; the shape matrices applied
      * in CellNumber. */
-    template <bool as_given, typename CellNumber>
+    template <int degree, bool as_given, typename CellNumber>
     void
     apply_cells(const dealii::MatrixFree<dim, double>       &data,
                 VectorType                                  &dst,
@@ -234,18 +249,23 @@ namespace signorini
 
     /** The diagonal and cell_dofs (with the constraint lines) of
      * @p cells, in the order of matrix_of_cell. */
+    template <int degree>
     void
     compute_diagonal(const std::vector<CellIterator> &cells);
 
-    /** cell_dofs with one entry per vertex for the direct cells, whose
-     * vertices have their dim dofs one after the other (deal.II numbers
+    /** cell_dofs with one entry per node for the direct cells, whose
+     * nodes have their dim dofs one after the other (deal.II numbers
      * them so; checked): a third of the indices to read in 3D. */
     void
     compact_cell_dofs();
 
-    const Material                 &material;
-    const double                    mu;
-    const double                    lambda;
+    const Material &material;
+    const double    mu;
+    const double    lambda;
+    /** The element's degree (1 or 2), set by reinit(). */
+    unsigned int fe_degree = 1;
+    /** Its dofs per cell. */
+    unsigned int                    n_cell_dofs = 0;
     dealii::MatrixFree<dim, double> matrix_free;
     /** The stiffness of each affine cell shape (cell batches of one cell:
      * Debian's deal.II does not vectorise over cells). */

@@ -24,7 +24,9 @@ namespace signorini
    * Geometric multigrid for ElasticLevelOperator by global coarsening: the
    * levels are the fine mesh coarsened once, twice, ... down to the coarse
    * mesh (coarsening_sequence), connected by LevelTransfer, each with its
-   * hanging nodes and the homogeneous Dirichlet data. Chebyshev smoothing
+   * hanging nodes and the homogeneous Dirichlet data. A fine level of
+   * degree 2 has Q1 on its own mesh below it (a p-step), and Q1 on the
+   * coarsened meshes below that. Chebyshev smoothing
    * (degree 3) on the inverse diagonal, the levels' cell matrices applied
    * in single precision; the coarsest level solved directly (Trilinos
    * Amesos KLU) on its assembled matrix.

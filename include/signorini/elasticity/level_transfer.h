@@ -28,6 +28,10 @@ namespace signorini
    * partitioned each on its own) are asked of their owners once, at
    * setup.
    *
+   * A level of degree 2 above one of degree 1 on the same mesh (the
+   * p-step of a Q2 operator's multigrid) is transferred the same way,
+   * cell by cell, its embedding the interpolation of Q1 at Q2's nodes.
+   *
    * It replaces deal.II's MGTwoLevelTransfer, which finds the coarse cells
    * through a table over every cell the mesh's levels could have: 4 bytes
    * times 8^L for L levels, 537 MB at 9 levels (sphere_indentation at
@@ -95,6 +99,20 @@ namespace signorini
     /** One level and the one below it, cell by cell. */
     struct CellwisePair
     {
+      /** The dofs per finer and per coarse cell. */
+      unsigned int n_fine   = 0;
+      unsigned int n_coarse = 0;
+      /** An entry of `raise`: finer dof, coarse dof, weight. */
+      struct RaiseEntry
+      {
+        unsigned int fine;
+        unsigned int coarse;
+        double       weight;
+      };
+      /** Where the finer level's degree is higher (the same mesh): the
+       * interpolation of a coarse cell's values at the finer cell's nodes,
+       * its nonzero entries (192 of Q2's 81 x 24 in 3D); else empty. */
+      std::vector<RaiseEntry> raise;
       /** Per owned finer cell: its dofs (local indices, `none` where not
        * owned here) and which embedding (a child number, or `identity`),
        * `| new_patch` where its coarse cell is not the previous finer
@@ -140,9 +158,10 @@ namespace signorini
     /** Whether deal.II's transfer is used. */
     bool by_dealii = false;
     /** The embeddings (child c) and their transposes (child c +
-     * children per cell). */
+     * children per cell) of the levels of degree 1. */
     CellMatrices embeddings;
-    unsigned int dofs_per_cell = 0;
+    /** The most dofs a cell has (Q2 in 3D). */
+    static constexpr unsigned int max_cell_dofs = 81;
   };
 } // namespace signorini
 

@@ -27,8 +27,8 @@ namespace signorini
 
   /**
    * The elastic operator without a matrix (`Linear solver/Type =
-   * matrix-free`): Q1 on quadrilaterals and hexahedra evaluated cell by cell
-   * (ElasticLevelOperator), the Newton systems solved by CG with geometric
+   * matrix-free`): Q1 or Q2 on quadrilaterals and hexahedra evaluated cell by
+   * cell (ElasticLevelOperator), the Newton systems solved by CG with geometric
    * multigrid (ElasticMultigrid).
    *
    * The Newton system with SystemAdditions: with G the discretisation's
@@ -50,7 +50,7 @@ namespace signorini
   public:
     using VectorType = typename ElasticOperator<dim>::VectorType;
 
-    /** Throws InputError (Linear solver/Type) unless the element is Q1
+    /** Throws InputError (Linear solver/Type) unless the element is Q1 or Q2
      * (checked at reinit()). @p verbose: a line per solve with the CG
      * iterations. */
     MatrixFreeOperator(const Discretisation<dim>     &discretisation,
