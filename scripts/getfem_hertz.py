@@ -137,22 +137,17 @@ class Scene:
         distance = np.linalg.norm(points - self.centre[:, None], axis=0)
         return np.abs(distance - self.radius) < 1e-6
 
-    def snap(self, points):
-        """`points` (columns) moved radially onto the circle or sphere."""
-        offset = points - self.centre[:, None]
-        return self.centre[:, None] + self.radius * offset / \
-            np.linalg.norm(offset, axis=0)
 
-
-def first_mesh(scene, size, degree, graded=None):
-    """Gmsh's mesh of the scene (Scene.geo), with its geometric
-    transformation of `degree`, and the regions of its boundary."""
+def first_mesh(scene, size, graded=None):
+    """Gmsh's mesh of the scene (Scene.geo), its cells curved (a geometric
+    transformation of degree 2, the mid-edge nodes of the arc or sphere on
+    it), and the regions of its boundary."""
     with tempfile.TemporaryDirectory(prefix="getfem-hertz-") as folder:
         geo = os.path.join(folder, "body.geo")
         msh = os.path.join(folder, "body.msh")
         with open(geo, "w") as out:
             out.write(scene.geo(size, graded))
-        subprocess.run(["gmsh", "-%d" % scene.dim, "-order", str(degree),
+        subprocess.run(["gmsh", "-%d" % scene.dim, "-order", "2",
                         "-format", "msh22", "-o", msh, geo], check=True,
                        stdout=subprocess.DEVNULL)
         mesh = gf.Mesh("import", "gmsh", msh)
@@ -182,14 +177,6 @@ def set_regions(mesh, scene):
         mesh.region_subtract(CONTACT, region)
 
 
-def snap_arc(mesh, scene):
-    """Moves the nodes of the contact region (the arc or sphere) onto it."""
-    ids = mesh.pid_in_regions(CONTACT)
-    points = mesh.pts()
-    points[:, ids] = scene.snap(points[:, ids])
-    mesh.set_pts(points)
-
-
 class Solver:
     """One cycle's GetFEM model on the current mesh."""
 
@@ -201,10 +188,10 @@ class Solver:
         self.mfu.set_classical_fem(degree)
         self.mfs = gf.MeshFem(mesh, 1)
         self.mfs.set_classical_fem(degree)
-        # Exact for the stiffness on straight cells; the curved ones of P2
-        # with two orders more.
+        # The stiffness on curved cells, two orders (2D) or one order (3D)
+        # above exact on straight ones.
         simplex = "IM_TRIANGLE" if dim == 2 else "IM_TETRAHEDRON"
-        order = 2 * degree if dim == 2 else min(2 * degree + 1, 8)
+        order = 2 * degree + (2 if dim == 2 else 1)
         self.mim = gf.MeshIm(mesh, gf.Integ("%s(%d)" % (simplex, order)))
         self.model = model = gf.Model("real")
         model.add_fem_variable("u", self.mfu)
@@ -280,16 +267,23 @@ class Solver:
             # nodes of linear triangles, 1.25 at those of quadratic lines,
             # 1.9 at the mid-edge nodes of quadratic triangles and zero (to
             # the curvature's terms) at their vertices.
-            diagonal = mass_diagonal(mass)[scalar]
-            defined = lumped > 0.5 * diagonal
-            pressure = np.zeros(len(force))
-            pressure[defined] = force[defined] / lumped[defined]
-            if not defined.all():
-                pressure = vertex_pressure(mass, scalar, pressure, defined)
+            defined = lumped > 0.5 * mass_diagonal(mass)[scalar]
+            nodal = np.zeros(len(force))
+            nodal[defined] = force[defined] / lumped[defined]
+            if self.degree == 1:
+                pressure = nodal
+            else:
+                pressure = recovered_pressure(mass, scalar, force)
             in_contact = force > ROUND_OFF * force.max()
             total = force.sum()
+            # The next cycle's guess: the lumped nodal pressure (the
+            # recovered one over- and undershoots at the contact zone's
+            # edge, and a guess of tension costs Newton steps), at the
+            # vertices of quadratic triangles the recovered one, at least
+            # zero.
             self.pressure = np.zeros(self.mfs.nbdof())
-            self.pressure[scalar] = pressure
+            self.pressure[scalar] = np.where(defined, nodal,
+                                             np.maximum(pressure, 0.))
         else:
             dofs = self.mfl.basic_dof_on_region(CONTACT)
             positions = self.mfl.basic_dof_nodes(dofs)
@@ -345,20 +339,16 @@ def mass_diagonal(mass):
     return diagonal
 
 
-def vertex_pressure(mass, nodes, pressure, defined):
-    """The pressure at the `nodes` not `defined` (the vertices of quadratic
-    triangles, whose shape functions integrate to zero): the mean of that
-    of the defined nodes on their faces, weighted by |M_ij| of the arc's
-    mass matrix M (so never above the largest)."""
+def recovered_pressure(mass, nodes, force):
+    """The pressure at `nodes` whose consistent nodal forces are `force`:
+    M p = F with the arc's mass matrix restricted to them (as signorini
+    recovers it at degree 2, source/postprocessing/pressure_recovery.cc;
+    the lumped area of a vertex of a quadratic triangle is zero)."""
     import scipy.sparse
+    import scipy.sparse.linalg
     matrix = scipy.sparse.csc_matrix(
-        (np.abs(mass.csc_val()), *mass.csc_ind()[::-1]),
-        shape=tuple(mass.size()))[nodes][:, nodes].tocsr()
-    weights = matrix[~defined][:, defined]
-    pressure = pressure.copy()
-    pressure[~defined] = weights @ pressure[defined] / \
-        np.asarray(weights.sum(axis=1)).ravel()
-    return pressure
+        (mass.csc_val(), *mass.csc_ind()[::-1]), shape=tuple(mass.size()))
+    return scipy.sparse.linalg.spsolve(matrix[nodes][:, nodes].tocsc(), force)
 
 
 def half_width(x, pressure, in_contact):
@@ -384,33 +374,12 @@ def half_width(x, pressure, in_contact):
 
 def refine(mesh, scene, ids, eta, fraction):
     """Bank-refines the `fraction` of the cells with the largest
-    indicators, moves the new nodes of the arc onto it; returns the
-    refined mesh, rebuilt from its cells."""
+    indicators (their closure cells too). New nodes lie on the parent
+    cell's curved boundary: the first mesh's quadratic arc or sphere."""
     count = max(1, int(round(fraction * len(ids))))
-    chosen = ids[np.argsort(eta)[-count:]]
-    mesh.refine(chosen)
-    mesh = rebuilt(mesh)
+    mesh.refine(ids[np.argsort(eta)[-count:]])
+    mesh.optimize_structure()
     set_regions(mesh, scene)
-    snap_arc(mesh, scene)
-    return mesh
-
-
-def rebuilt(mesh):
-    """A new mesh of the cells of `mesh`, without GetFEM's record of the
-    closure ("green") cells of its refinements. That record keeps the
-    coordinates of the cells it replaced, and a later refinement restores
-    them by their coordinates: after the arc's nodes were moved it makes
-    new nodes at the old places, a mesh whose cells no longer share their
-    faces (in 3D the outer faces then measured 4.9 where they are 3.9
-    mm^2)."""
-    ids = np.asarray(mesh.cvid())
-    points, offsets = mesh.pts_from_cvid(ids)
-    per_cell = offsets[1] - offsets[0]
-    assert np.all(np.diff(offsets) == per_cell)
-    cells = points.reshape(mesh.dim(), len(ids), per_cell).transpose(0, 2, 1)
-    fresh = gf.Mesh("empty", mesh.dim())
-    fresh.add_convex(mesh.geotrans(ids[:1])[0], cells)
-    return fresh
 
 
 def main():
@@ -424,10 +393,11 @@ def main():
     parser.add_argument("--cycles", type=int, default=8)
     parser.add_argument("--size", type=float, default=None,
                         help="the first mesh's cell size [mm] (default: "
-                        "0.1 in 2D, 0.25 in 3D, twice that for P2)")
-    parser.add_argument("--graded", type=float, default=None,
-                        help="a first mesh graded towards the contact "
-                        "point, of this cell size [mm] near it")
+                        "0.2 in 2D, 0.25 in 3D)")
+    parser.add_argument("--graded", type=float, default=0.05,
+                        help="the first mesh's cell size [mm] within 1.2 a "
+                        "of the contact point (default 0.05), growing with "
+                        "the distance beyond; 0: a uniform first mesh")
     parser.add_argument("--fraction", type=float, default=None,
                         help="the fraction of the cells refined per cycle "
                         "(default: 0.3 in 2D, 0.15 in 3D)")
@@ -435,12 +405,12 @@ def main():
     gf.util("trace level", 0)
     gf.util("warning level", 0)
     scene = Scene(2 if args.scene == "2d" else 3)
-    size = args.size or (0.1 if scene.dim == 2 else 0.25) * args.degree
+    size = args.size or (0.2 if scene.dim == 2 else 0.25)
     # In 3D Bank's closure refines so many neighbours of the refined
     # tetrahedra that 30 % grows the mesh 4.5-fold a cycle; 15 % grows it
     # 3-fold, as signorini's 30 % of the hexahedra.
     fraction = args.fraction or (0.3 if scene.dim == 2 else 0.15)
-    mesh = first_mesh(scene, size, args.degree, args.graded)
+    mesh = first_mesh(scene, size, args.graded or None)
     print(",".join(COLUMNS), flush=True)
     solver = ids = eta = None
     for cycle in range(args.cycles):
@@ -462,7 +432,7 @@ def main():
             old_p.set_classical_fem(args.degree)
             assert old_u.nbdof() == solver.mfu.nbdof()
             u, pressure = solver.model.variable("u"), solver.pressure
-            mesh = refine(mesh, scene, ids, eta, fraction)
+            refine(mesh, scene, ids, eta, fraction)
             solver = Solver(scene, mesh, args.degree, args.contact)
             iterations = solver.solve(
                 gf.compute_interpolate_on(old_u, u, solver.mfu),
