@@ -300,8 +300,13 @@ class Solver:
         if dim == 2:
             a = half_width(positions[0], pressure, in_contact)
         else:
-            a = min(positions[0, in_contact].max(),
-                    positions[1, in_contact].max())
+            if self.contact == "nodal":
+                graph, indices = mass, scalar
+            else:
+                graph = gf.asm_mass_matrix(self.mim, self.mfl, self.mfl,
+                                           CONTACT)
+                indices = dofs
+            a = zone_width(positions, pressure, in_contact, graph, indices)
         return p0, a, int(in_contact.sum()), total, penetration
 
     def indicators(self):
@@ -370,6 +375,56 @@ def half_width(x, pressure, in_contact):
         (v_inner ** 2 - v_inside ** 2)
     theta = min(1., distance / (outside - inside))
     return inside + theta * (outside - inside) - low
+
+
+def zone_width(positions, pressure, in_contact, mass, nodes):
+    """The contact radius in 3D as signorini measures it
+    (source/postprocessing/zone_edges.cc, contact_zone.cc): the smaller of
+    the extents along x and along y of the nodes in contact and of the
+    zone's edge points, one between each node in contact and each open node
+    next to it (sharing a face of the arc's mesh: the mass matrix's
+    pattern), where p^2, extrapolated linearly from the node in contact
+    before it on the line from the open node, vanishes. That node is the
+    neighbour in contact most nearly in line (a triangle mesh has no lines
+    of nodes)."""
+    import scipy.sparse
+    pattern = scipy.sparse.csc_matrix(
+        (np.ones(len(mass.csc_val())), *mass.csc_ind()[::-1]),
+        shape=tuple(mass.size()))[nodes][:, nodes].tocsr()
+    points = [positions[:, i] for i in np.nonzero(in_contact)[0]]
+    for i in np.nonzero(in_contact)[0]:
+        around = pattern.indices[pattern.indptr[i]:pattern.indptr[i + 1]]
+        inside = [j for j in around if j != i and in_contact[j]]
+        for n in around:
+            if in_contact[n]:
+                continue
+            outward = positions[:, n] - positions[:, i]
+            best, behind = 0.5, None  # within 60 degrees of the line
+            for j in inside:
+                back = positions[:, i] - positions[:, j]
+                alignment = back @ outward / np.linalg.norm(back) / \
+                    np.linalg.norm(outward)
+                if alignment > best:
+                    best, behind = alignment, j
+            points.append(square_root_edge(
+                positions[:, behind] if behind is not None else None,
+                pressure[behind] if behind is not None else 0.,
+                positions[:, i], pressure[i], positions[:, n]))
+    points = np.array(points).T
+    return min(points[0].max() - points[0].min(),
+               points[1].max() - points[1].min())
+
+
+def square_root_edge(inner, v_inner, inside, v_inside, outside):
+    """The point between `inside` and `outside` where p^2, linear through
+    (inner, v_inner^2) and (inside, v_inside^2), vanishes; `inside` if
+    there is no `inner` or p does not fall towards the edge."""
+    if inner is None or not (v_inner > v_inside >= 0):
+        return inside
+    distance = v_inside ** 2 * np.linalg.norm(inside - inner) / \
+        (v_inner ** 2 - v_inside ** 2)
+    theta = min(1., distance / np.linalg.norm(outside - inside))
+    return inside + theta * (outside - inside)
 
 
 def refine(mesh, scene, ids, eta, fraction):
