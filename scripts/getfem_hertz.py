@@ -449,10 +449,11 @@ def main():
     parser.add_argument("--size", type=float, default=None,
                         help="the first mesh's cell size [mm] (default: "
                         "0.2 in 2D, 0.25 in 3D)")
-    parser.add_argument("--graded", type=float, default=0.05,
+    parser.add_argument("--graded", type=float, default=None,
                         help="the first mesh's cell size [mm] within 1.2 a "
-                        "of the contact point (default 0.05), growing with "
-                        "the distance beyond; 0: a uniform first mesh")
+                        "of the contact point (default: 0.05 in 2D, 0.02 "
+                        "in 3D), growing with the distance beyond; 0: a "
+                        "uniform first mesh")
     parser.add_argument("--fraction", type=float, default=None,
                         help="the fraction of the cells refined per cycle "
                         "(default: 0.3 in 2D, 0.15 in 3D)")
@@ -465,7 +466,9 @@ def main():
     # tetrahedra that 30 % grows the mesh 4.5-fold a cycle; 15 % grows it
     # 3-fold, as signorini's 30 % of the hexahedra.
     fraction = args.fraction or (0.3 if scene.dim == 2 else 0.15)
-    mesh = first_mesh(scene, size, args.graded or None)
+    graded = (0.05 if scene.dim == 2 else 0.02) if args.graded is None \
+        else args.graded
+    mesh = first_mesh(scene, size, graded or None)
     print(",".join(COLUMNS), flush=True)
     solver = ids = eta = None
     for cycle in range(args.cycles):
