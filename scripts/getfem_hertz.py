@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The Hertz scenes of signorini modelled in GetFEM (the Debian package
-python3-getfem, 5.4), a peer code for scripts/work_precision.py:
+python3-getfem, 5.4), a peer code for scripts/work_precision.py and
+scripts/peer_hertz.py:
 
     2d  prm/hertz_cylinder.prm: the quarter disk R = 1 centred (0, 1),
         E = 1000 MPa, nu = 0.3, plane strain, its symmetry line x = 0
@@ -12,20 +13,30 @@ python3-getfem, 5.4), a peer code for scripts/work_precision.py:
         F = 1.5 N), held vertically only by the rigid plane z = 0
 
     scripts/getfem_hertz.py 2d|3d [--degree 1|2] [--contact nodal|integral]
-                            [--cycles N] [--size H] [--fraction F]
+                            [--cycles N] [--size H] [--graded H0]
+                            [--fraction F]
 
-Lagrange elements of degree 1 or 2 (P1, P2) on triangles or tetrahedra. The
-first mesh is Gmsh's, of uniform size H, curved for P2 (its geometric
-transformation is of degree 2: GT_PK(d,2), the mid-edge nodes of the arc or
-sphere on it); then GetFEM's own adaptive refinement: a cycle solves,
-estimates the error of each cell by the jump of the normal stress across its
-inner faces (a Kelly-like indicator: eta_K^2 = sum over the inner faces F of
-K of h_K/2 |[sigma(u) n]|^2 integrated over F), and Bank-refines the
-fraction F of the cells with the largest indicators (30 %, as signorini's
-Kelly cycles; GetFEM does not coarsen). Refinement places the new nodes of
-the curved boundary on the parent cell's boundary; they are moved onto the
-circle or sphere (radially) after each refinement. The next cycle starts
-from the previous solution interpolated onto the refined mesh.
+Lagrange elements of degree 1 or 2 (P1, P2) on triangles or tetrahedra.
+The first mesh is Gmsh's: cells of size H (0.2 mm in 2D, 0.25 in 3D),
+graded to H0 within 1.2 a of the contact point (0.05 mm in 2D, 0.02 in 3D;
+0 for a uniform mesh), curved for P1 and P2 alike (a geometric
+transformation of degree 2, GT_PK(d,2), the mid-edge nodes of the arc or
+sphere on it). Then GetFEM's own adaptive refinement: a cycle solves,
+estimates the error of each cell by the jump of the normal stress across
+its inner faces (a Kelly-like indicator: eta_K^2 = sum over the inner
+faces F of K of h_K/2 |[sigma(u) n]|^2 integrated over F), and
+Bank-refines the fraction F of the cells with the largest indicators (30 %
+in 2D, as signorini's Kelly cycles; 15 % in 3D, where the closure of
+refined tetrahedra grows the mesh 4.5-fold a cycle at 30 %, 3-fold at
+15 %, as signorini's 30 % of hexahedra). GetFEM does not coarsen. New
+nodes lie on the parent cell's curved boundary, so the geometry is the
+first mesh's quadratic arc or sphere throughout, hence the grading: moving
+the new nodes onto the circle or sphere, as signorini's manifolds place
+them, leaves GetFEM's record of its closure cells with their old
+coordinates, and a later refinement then made cells that no longer share
+faces (measured: the outer faces' area 4.9 where it is 3.9 mm^2). The
+next cycle starts from the previous solution and pressure interpolated
+onto the refined mesh.
 
 Frictionless contact with the plane by Alart-Curnier's augmented
 Lagrangian: nodal (add_nodal_contact_with_rigid_obstacle_brick, the
@@ -36,16 +47,20 @@ same degree on the arc, the pressure); r = E. Newton's method with MUMPS.
 The symmetry lines or planes by normal Dirichlet conditions with
 multipliers.
 
-Measured as signorini measures (source/postprocessing/contact_zone.cc):
-p0 is the largest nodal pressure on the arc, a node's pressure its contact
-force (the multiplier) divided by its lumped area (the integral of its shape
-function over the arc; where that is not positive, at the vertices of
-quadratic triangles in 3D, the pressure is the consistent one, M p = f with
-the arc's mass matrix), or with the integral contact the multiplier's nodal
-value. The contact half-width a in 2D is the x of the last node in contact
-moved towards the first open one to where p^2, extrapolated linearly from
-the last two nodes in contact, vanishes; in 3D the smaller of the largest x
-and the largest y of the nodes in contact.
+Measured as signorini measures (source/postprocessing/contact_zone.cc,
+zone_edges.cc, pressure_recovery.cc): p0 is the largest nodal pressure on
+the arc; a node's pressure at degree 1 its contact force (the multiplier)
+divided by its lumped area (the integral of its shape function over the
+arc), at degree 2 the recovered one, M p = F with the arc's mass matrix
+(the lumped area of a quadratic triangle's vertex is zero); with the
+integral contact the multiplier's nodal value. A node is in contact where
+its force exceeds 1e-8 of the largest (with the integral contact, where
+the multiplier exceeds 1 % of its largest). The contact half-width a is
+the extent of the nodes in contact and of the zone's edge points, one
+between each node in contact and each open node next to it, where p^2,
+extrapolated linearly from the node in contact before it, vanishes: in 2D
+along the arc, in 3D along x and along y (the smaller), the node before it
+the neighbour in contact most nearly in line.
 
 Prints a CSV row per cycle on stdout as the cycle ends: cycle, cells, dofs
 (of the displacement), contact_nodes (in contact), iterations (Newton's),
