@@ -87,7 +87,7 @@ E_STAR = YOUNG / (1 - POISSON ** 2)
 # Regions: the arc or sphere (contact), the flat top, the symmetry planes
 # x = 0 and y = 0, the inner faces (the indicator's jumps).
 CONTACT, TOP, SYMMETRY_X, SYMMETRY_Y, INNER = 1, 2, 3, 4, 5
-# A node is in contact where its pressure exceeds this fraction of the
+# A node is in contact where its force exceeds this fraction of the
 # largest (an open node's multiplier is zero to round-off, and may be
 # positive).
 ROUND_OFF = 1e-8
