@@ -377,10 +377,27 @@ def peer_reach_table(peers):
     return common.table(["to reach"] + labels, rows)
 
 
+def require_sections(path, names):
+    """Exits before any run if `path` lacks a section of `names` (its
+    <!-- begin NAME --> and <!-- end NAME --> lines):
+    common.replace_sections would exit only after all the runs."""
+    with open(path) as f:
+        text = f.read()
+    missing = [name for name in names
+               if "<!-- begin %s -->\n" % name not in text or
+               "<!-- end %s -->" % name not in text]
+    if missing:
+        sys.exit("%s: %s has no section %s" % (
+            sys.argv[0], path, ", ".join("'%s'" % m for m in missing)))
+
+
+PEER_SECTIONS = ["getfem-reach", "getfem-cycles"]
+
+
 def peer_tables(peers):
     """The sections of doc/work-precision.md from the peer runs."""
-    return {"getfem-reach": peer_reach_table(peers),
-            "getfem-cycles": peer_cycles_table(peers)}
+    return dict(zip(PEER_SECTIONS, (peer_reach_table(peers),
+                                     peer_cycles_table(peers))))
 
 
 def methods(epsilons, quick):
@@ -575,6 +592,8 @@ def friction():
 
 def getfem():
     """Only the comparison with GetFEM: its tables and the 3D chart."""
+    require_sections(common.output_file("doc/work-precision.md"),
+                     PEER_SECTIONS)
     work = common.work_folder("work-precision-getfem")
     os.makedirs(work, exist_ok=True)
     common.ensure_tools()
@@ -602,6 +621,10 @@ def main():
                               else "work-precision")
     os.makedirs(work, exist_ok=True)
     if not quick:
+        require_sections(
+            common.output_file("doc/work-precision.md"),
+            ["final-cycles", "p1-cycles"] +
+            (PEER_SECTIONS if not common.SMOKE else []))
         common.ensure_tools()
     # The comparison with GetFEM: not in the quick sweep, nor in the test
     # suite's smoke mode.
