@@ -161,8 +161,8 @@ def ensure_getfem():
 def stamped(command, folder):
     """Runs `command` in `folder`; returns its stdout lines, each with the
     wall time [s] from the start at which it arrived, and the process's
-    peak memory [MB] and processor time [s]. Its stderr goes to
-    folder/stderr.txt."""
+    peak memory [MB], processor time [s] and wall time to its exit [s]. Its
+    stderr goes to folder/stderr.txt."""
     lines = []
     with open(os.path.join(folder, "stderr.txt"), "w") as errors:
         start = time.monotonic()
@@ -172,16 +172,19 @@ def stamped(command, folder):
         for line in process.stdout:
             lines.append((time.monotonic() - start, line.rstrip("\n")))
         _, status, usage = os.wait4(process.pid, 0)
+        wall = time.monotonic() - start
     if status != 0:
         sys.exit("%s: %s failed (see %s)" % (
             sys.argv[0], " ".join(command),
             os.path.join(folder, "stderr.txt")))
-    return lines, usage.ru_maxrss / 1024, usage.ru_utime + usage.ru_stime
+    return lines, (usage.ru_maxrss / 1024, usage.ru_utime + usage.ru_stime,
+                   wall)
 
 
 def peer_signorini(work, name, scene, settings):
     """One whole run of signorini: a row per cycle, the time at its end
-    that of the last line it printed for the cycle."""
+    that of the last line it printed for the cycle (its summary, before it
+    writes the cycle's files), and stamped()'s figures of the whole run."""
     folder = os.path.join(work, name)
     os.makedirs(folder, exist_ok=True)
     statistics_csv = os.path.join(folder, "statistics.csv")
@@ -198,7 +201,7 @@ def peer_signorini(work, name, scene, settings):
         lines.append("end")
     prm = os.path.join(work, name + "-run.prm")
     common.write_file(prm, "\n".join(lines) + "\n")
-    output, memory, processor = stamped([common.SIGNORINI, prm], folder)
+    output, whole = stamped([common.SIGNORINI, prm], folder)
     ends = []
     for stamp, line in output:
         if line.startswith("Cycle "):
@@ -214,19 +217,20 @@ def peer_signorini(work, name, scene, settings):
                      "p0_error": row["max_pressure"] / p0 - 1,
                      "a_error": row["contact_width"] / a - 1,
                      "run_time": end, "own_time": float("nan")})
-    return rows, memory, processor
+    return rows, whole
 
 
 def peer_getfem(work, name, scene, options):
     """One whole run of scripts/getfem_hertz.py: a row per cycle, the time
     at its end that at which its row arrived (own_time: the script's own
-    clock, from its first line)."""
+    clock, from its first line), and stamped()'s figures of the whole
+    run."""
     folder = os.path.join(work, name)
     os.makedirs(folder, exist_ok=True)
     command = [GETFEM_PYTHON,
                os.path.join(common.ROOT, "scripts", "getfem_hertz.py"),
                PEER_SCENES[scene][2]] + options
-    output, memory, processor = stamped(command, folder)
+    output, whole = stamped(command, folder)
     header = output[0][1].split(",")
     rows = []
     for stamp, line in output[1:]:
@@ -235,13 +239,14 @@ def peer_getfem(work, name, scene, options):
         rows.append(row)
     common.write_file(os.path.join(folder, "cycles.csv"),
                       "\n".join(line for _, line in output) + "\n")
-    return rows, memory, processor
+    return rows, whole
 
 
 def peer_sweep(work):
     """Every entry of PEER_RUNS PEER_REPEATS times in turn; returns
-    {(scene, label): (rows, peak memory [MB], processor time [s])}, a row
-    per cycle with the median time of the repeats."""
+    {(scene, label): (rows, (peak memory [MB], processor time [s], wall
+    time to the exit [s]))}, a row per cycle with the median time of the
+    repeats, and the medians of the whole runs' figures."""
     runs = {}
     for repeat in range(PEER_REPEATS):
         for scene, label, code, settings in PEER_RUNS:
@@ -261,8 +266,9 @@ def peer_sweep(work):
             for column in ("run_time", "own_time"):
                 row[column] = statistics.median(r[0][i][column]
                                                 for r in repeats)
-        results[key] = (rows, statistics.median(r[1] for r in repeats),
-                        statistics.median(r[2] for r in repeats))
+        results[key] = (rows, tuple(statistics.median(r[1][i]
+                                                      for r in repeats)
+                                    for i in range(3)))
     return results
 
 
@@ -270,7 +276,7 @@ def peer_plots(work, peers, scene, column, whole=False):
     """The gnuplot plot clauses of the peer runs on `scene` (the error in
     `column` against the whole process's time)."""
     plots = []
-    for i, ((s, label), (rows, _, _)) in enumerate(
+    for i, ((s, label), (rows, _)) in enumerate(
             (k, v) for k, v in peers.items() if k[0] == scene):
         data = common.write_data(work, "peer-%s-%d-%s" % (scene, i, column),
                                  rows, ["run_time", column])
@@ -303,7 +309,7 @@ def peer_final_rows(peers):
     """The last cycle of each peer run, as rows of the final-cycles
     table."""
     rows = []
-    for (scene, label), (cycles, _, _) in peers.items():
+    for (scene, label), (cycles, _) in peers.items():
         last = cycles[-1]
         rows.append([scene, label, "kelly" if label.startswith("signorini")
                      else "stress jump", "%d" % (last["cycle"] + 1),
@@ -318,7 +324,8 @@ def peer_final_rows(peers):
 def peer_cycles_table(peers):
     """Every cycle of every peer run."""
     rows = []
-    for (scene, label), (cycles, memory, processor) in peers.items():
+    for (scene, label), (cycles, (memory, processor, wall)) in \
+            peers.items():
         for row in cycles:
             own = row["own_time"]
             rows.append([scene, label, "%d" % row["cycle"],
@@ -328,7 +335,8 @@ def peer_cycles_table(peers):
                          "" if math.isnan(own) else "%.2f" % own,
                          "%+.3f" % (100 * row["p0_error"]),
                          "%+.3f" % (100 * row["a_error"])])
-        rows.append([scene, label, "whole run", "", "", "", "",
+        rows.append([scene, label, "whole run", "", "",
+                     "%.2f to the exit" % wall, "",
                      "peak memory %.0f MB" % memory,
                      "processor time %.1f s" % processor])
     return common.table(["scene", "code", "cycle", "dofs",
