@@ -39,6 +39,7 @@ the tables and charts are written to copies in FOLDER/doc/.
 """
 import math
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -261,7 +262,8 @@ def peer_sweep(work):
     runs = {}
     for repeat in range(PEER_REPEATS):
         for scene, label, code, settings in PEER_RUNS:
-            name = "%s-%s-%d" % (scene, label.replace(" ", "_"), repeat)
+            name = "%s-%s-%d" % (scene, re.sub(r"[^A-Za-z0-9.]+", "_",
+                                                label), repeat)
             print("  " + name, file=sys.stderr)
             run = (peer_signorini if code == "signorini" else peer_getfem)(
                 work, name, scene, settings)
@@ -283,17 +285,32 @@ def peer_sweep(work):
     return results
 
 
+def peer_labels():
+    """The labels of PEER_RUNS, signorini's first, each once."""
+    labels = []
+    for first in (True, False):
+        for _, label, code, _ in PEER_RUNS:
+            if (code == "signorini") == first and label not in labels:
+                labels.append(label)
+    return labels
+
+
 def peer_plots(work, peers, scene, column, whole=False):
     """The gnuplot plot clauses of the peer runs on `scene` (the error in
-    `column` against the whole process's time)."""
+    `column` against the whole process's time): a colour per label on
+    every chart, GetFEM's lines dashed."""
     plots = []
-    for i, ((s, label), (rows, _)) in enumerate(
-            (k, v) for k, v in peers.items() if k[0] == scene):
+    codes = {label: code for _, label, code, _ in PEER_RUNS}
+    for i, label in enumerate(peer_labels()):
+        if (scene, label) not in peers:
+            continue
         data = common.write_data(work, "peer-%s-%d-%s" % (scene, i, column),
-                                 rows, ["run_time", column])
-        plots.append("'%s' using 1:(abs($2)) with linespoints lw 2 lc rgb "
-                     "'%s' pt 5 title '%s%s'" %
-                     (data, PEER_COLOURS[i % len(PEER_COLOURS)], label,
+                                 peers[(scene, label)][0],
+                                 ["run_time", column])
+        plots.append("'%s' using 1:(abs($2)) with linespoints lw 2 dt %d "
+                     "lc rgb '%s' pt 5 title '%s%s'" %
+                     (data, 1 if codes[label] == "signorini" else 2,
+                      PEER_COLOURS[i % len(PEER_COLOURS)], label,
                       ", whole process" if whole else ""))
     return plots
 
@@ -311,8 +328,8 @@ def peer_chart(work, peers, path):
                 peer_plots(work, peers, "hertz_sphere", column))))
     common.gnuplot(
         "set terminal pngcairo size 1400,560 font ',10'\n"
-        "set output '%s'\nset logscale xy\nset grid\n"
-        "set key bottom left font ',8'\nset multiplot layout 1,2\n%s"
+        "set output '%s'\nset logscale xy\nset grid\nset format y '%%g'\n"
+        "set key top right font ',8'\nset multiplot layout 1,2\n%s"
         "unset multiplot\n" % (path, "".join(panels)))
 
 
@@ -369,12 +386,10 @@ def settled(rows, column, bound):
 
 
 def peer_reach_table(peers):
-    """What each configuration takes to reach each target for good: dofs
-    and time."""
-    labels = []
-    for _, label, _, _ in PEER_RUNS:
-        if label not in labels:
-            labels.append(label)
+    """What each configuration takes to reach each target for good (the
+    first cycle from which every later cycle of the run stays within it):
+    dofs and time."""
+    labels = peer_labels()
     rows = []
     for scene, (title, _, _) in PEER_SCENES.items():
         for target, column, bound in PEER_TARGETS:
@@ -386,8 +401,11 @@ def peer_reach_table(peers):
                 cycles = peers[(scene, label)][0]
                 reached = settled(cycles, column, bound)
                 if reached:
-                    row.append("{:,} dofs, {:.2f} s".format(
-                        int(reached["dofs"]), reached["run_time"]))
+                    # Reached on the run's last cycle only: nothing shows
+                    # that it stays.
+                    row.append("{:,} dofs, {:.2f} s{}".format(
+                        int(reached["dofs"]), reached["run_time"],
+                        " (last cycle)" if reached is cycles[-1] else ""))
                 else:
                     best = min(cycles, key=lambda r: abs(r[column]))
                     row.append("not reached (best %+.2f %% at %s dofs)" % (
@@ -504,15 +522,18 @@ def chart(work, results, path, scenes=None, peers=None):
                     "'%s' pt %d title '%s, %s'" %
                     (data, dash, colours[i % len(colours)], 7 if dash == 1
                      else 6, label, refinement))
-        if peers:
+        xlabel = "run time without output [s]"
+        if peers and any(s == scene for s, _ in peers):
             plots += peer_plots(work, peers, scene, "p0_error", True)
+            xlabel = ("run time without output, or of the whole process "
+                      "[s]")
         panels.append(
-            "set title '%s'\nset xlabel 'run time without output [s]'\n"
+            "set title '%s'\nset xlabel '%s'\n"
             "set ylabel 'relative error'\nplot %s\n" %
-            (title, ", \\\n  ".join(plots)))
+            (title, xlabel, ", \\\n  ".join(plots)))
     common.gnuplot(
         "set terminal pngcairo size %d,560 font ',10'\n"
-        "set output '%s'\nset logscale xy\nset grid\n"
+        "set output '%s'\nset logscale xy\nset grid\nset format y '%%g'\n"
         "set key bottom left font ',8'\nset multiplot layout 1,%d\n%s"
         "unset multiplot\n" % (700 * len(panels), path, len(panels),
                                 "".join(panels)))
