@@ -9,7 +9,9 @@ and draws error against time, log-log, one curve per method and refinement.
     scripts/work-precision           the sweep and the stability map:
                                      doc/work-precision.md, .png,
                                      doc/work-precision-3d.png and
-                                     doc/stability.md (about N minutes)
+                                     doc/stability.md (about 15 minutes,
+                                     10 of them the comparison with
+                                     GetFEM)
     scripts/work-precision --quick   a small sweep (under two minutes) into
                                      build/work-precision-quick/, checked;
                                      what the ctest runs
@@ -23,7 +25,7 @@ and draws error against time, log-log, one curve per method and refinement.
                                      2D and 3D Hertz scenes (part of the
                                      sweep): its tables in
                                      doc/work-precision.md and
-                                     doc/work-precision-3d.png (about 15
+                                     doc/work-precision-3d.png (about 10
                                      minutes; the lines of the 2D chart
                                      are redrawn by the whole sweep)
 
