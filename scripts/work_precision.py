@@ -118,12 +118,11 @@ PEER_RUNS = [
     ("hertz", "GetFEM P2", "getfem", ["--degree", "2", "--cycles", "8"]),
     ("hertz_sphere", "signorini Q1", "signorini",
      {"Mesh refinement": {"Number of cycles": "6"}}),
-    ("hertz_sphere", "signorini Q2", "signorini",
-     {"Geometry": Q2, "Mesh refinement": {"Number of cycles": "5"}}),
     ("hertz_sphere", "signorini Q1, Refine fraction 0.1", "signorini",
      {"Mesh refinement": {"Number of cycles": "8", "Refine fraction": "0.1"}}),
-    ("hertz_sphere", "signorini Q2, Refine fraction 0.1", "signorini",
-     {"Geometry": Q2, "Mesh refinement": {"Number of cycles": "6",
+    # prm/hertz_sphere_q2.prm as shipped (Refine fraction 0.1, 8 cycles).
+    ("hertz_sphere", "signorini Q2", "signorini",
+     {"Geometry": Q2, "Mesh refinement": {"Number of cycles": "8",
                                           "Refine fraction": "0.1"}}),
     ("hertz_sphere", "GetFEM P1", "getfem",
      ["--degree", "1", "--cycles", "4"]),
@@ -136,10 +135,12 @@ PEER_REPEATS = 3
 # The Python with Debian's python3-getfem (not another python3 on the
 # PATH).
 GETFEM_PYTHON = "/usr/bin/python3"
-# The targets of the table of what it takes: (label, error column, bound).
-PEER_TARGETS = [("p0 within 1 %", "p0_error", 0.01),
-                ("p0 within 0.3 %", "p0_error", 0.003),
-                ("a within 1 %", "a_error", 0.01)]
+# The targets of the table of what it takes: (label, error columns, bound
+# on each).
+PEER_TARGETS = [("p0 within 1 %", ("p0_error",), 0.01),
+                ("p0 within 0.3 %", ("p0_error",), 0.003),
+                ("a within 1 %", ("a_error",), 0.01),
+                ("p0 and a within 0.5 %", ("p0_error", "a_error"), 0.005)]
 PEER_COLOURS = ["#000000", "#6a3d9a", "#1f78b4", "#e31a1c", "#33a02c",
                 "#ff7f00"]
 
@@ -375,12 +376,17 @@ def peer_cycles_table(peers):
                          "a error [%]"], rows)
 
 
-def settled(rows, column, bound):
-    """The first cycle from which the error stays within `bound` on every
-    later cycle of the run, or None."""
+def worst(row, columns):
+    """The largest of a row's errors in `columns`, with its sign."""
+    return max((row[c] for c in columns), key=abs)
+
+
+def settled(rows, columns, bound):
+    """The first cycle from which the errors in `columns` stay within
+    `bound` on every later cycle of the run, or None."""
     found = None
     for row in rows:
-        if abs(row[column]) < bound:
+        if abs(worst(row, columns)) < bound:
             found = found or row
         else:
             found = None
@@ -394,14 +400,14 @@ def peer_reach_table(peers):
     labels = peer_labels()
     rows = []
     for scene, (title, _, _) in PEER_SCENES.items():
-        for target, column, bound in PEER_TARGETS:
+        for target, columns, bound in PEER_TARGETS:
             row = ["%s: %s" % (title, target)]
             for label in labels:
                 if (scene, label) not in peers:
                     row.append("")
                     continue
                 cycles = peers[(scene, label)][0]
-                reached = settled(cycles, column, bound)
+                reached = settled(cycles, columns, bound)
                 if reached:
                     # Reached on the run's last cycle only: nothing shows
                     # that it stays.
@@ -409,9 +415,11 @@ def peer_reach_table(peers):
                         int(reached["dofs"]), reached["run_time"],
                         " (last cycle)" if reached is cycles[-1] else ""))
                 else:
-                    best = min(cycles, key=lambda r: abs(r[column]))
+                    best = min(cycles,
+                               key=lambda r: abs(worst(r, columns)))
                     row.append("not reached (best %+.2f %% at %s dofs)" % (
-                        100 * best[column], "{:,}".format(int(best["dofs"]))))
+                        100 * worst(best, columns),
+                        "{:,}".format(int(best["dofs"]))))
             rows.append(row)
     return common.table(["to reach"] + labels, rows)
 
