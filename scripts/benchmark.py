@@ -18,8 +18,9 @@ part runs the indentation scene past a million dofs on two processes
 (matrix-free) with Coulomb friction and without, in turn: per cycle the
 contact solve of each over one linear solve, their quotient, and the memory
 per dof. The degree-2 part runs scenes on Q1 and on Q2 (Element degree
-= 2) in turn, with the assembled operator: one linear solve's time per dof
-and core on the last cycle of each, and Q2's over Q1's.
+= 2) in turn, with the assembled operator and, in 3D, the matrix-free one:
+one linear solve's time per dof and core on the last cycle of each, and
+Q2's over Q1's with the same operator.
 
 Prints the tables and rewrites the sections of doc/performance.md between
 <!-- begin benchmark --> and <!-- end benchmark --> (and benchmark-3d,
@@ -493,52 +494,84 @@ def two_d(repeat):
     return text
 
 
-# Q1 against Q2 (assembled): (name, scene, Q1's overrides, Q2's overrides),
-# the Q2 runs from a coarser start so that both end near the same dofs.
+# Q1 against Q2: (name, scene, [(element, operator, overrides)]), the Q2
+# runs from a coarser start so that both end near the same dofs; in 3D both
+# operators, the matrix-free one a cycle further (its per-dof cost is
+# that of large meshes).
 Q2 = {"Element degree": "2"}
+DIRECT = {"Linear solver": {"Type": "direct"}}
 DEGREE_CASES = [
-    ("hertz_cylinder (2D, curved)", "prm/hertz_cylinder.prm",
-     {"Mesh refinement": {"Number of cycles": "10"}},
-     {"Geometry": {**Q2, "Initial refinement": "1"},
-      "Mesh refinement": {"Number of cycles": "12"}}),
-    ("sphere_indentation (3D box)", "prm/sphere_indentation.prm",
-     {"Mesh refinement": {"Number of cycles": "4"}, **AMG_CG},
-     {"Geometry": {**Q2, "Initial refinement": "2"},
-      "Mesh refinement": {"Number of cycles": "4"}, **AMG_CG}),
-    ("hertz_sphere (3D, curved)", "prm/hertz_sphere.prm",
-     {"Mesh refinement": {"Number of cycles": "5"}, **AMG_CG},
-     {"Geometry": {**Q2, "Initial refinement": "1"},
-      "Mesh refinement": {"Number of cycles": "5"}, **AMG_CG}),
+    ("hertz_cylinder (2D, curved)", "prm/hertz_cylinder.prm", [
+        ("Q1", "direct", {"Mesh refinement": {"Number of cycles": "10"},
+                          **DIRECT}),
+        ("Q2", "direct", {"Geometry": {**Q2, "Initial refinement": "1"},
+                          "Mesh refinement": {"Number of cycles": "12"},
+                          **DIRECT})]),
+    ("sphere_indentation (3D box)", "prm/sphere_indentation.prm", [
+        ("Q1", "AMG-CG", {"Mesh refinement": {"Number of cycles": "4"},
+                          **AMG_CG}),
+        ("Q2", "AMG-CG", {"Geometry": {**Q2, "Initial refinement": "2"},
+                          "Mesh refinement": {"Number of cycles": "4"},
+                          **AMG_CG}),
+        ("Q1", "matrix-free", {"Mesh refinement": {"Number of cycles": "5"},
+                               **MATRIX_FREE}),
+        ("Q2", "matrix-free", {"Geometry": {**Q2, "Initial refinement": "2"},
+                               "Mesh refinement": {"Number of cycles": "5"},
+                               **MATRIX_FREE})]),
+    ("hertz_sphere (3D, curved)", "prm/hertz_sphere.prm", [
+        ("Q1", "AMG-CG", {"Mesh refinement": {"Number of cycles": "5"},
+                          **AMG_CG}),
+        ("Q2", "AMG-CG", {"Geometry": {**Q2, "Initial refinement": "1"},
+                          "Mesh refinement": {"Number of cycles": "5"},
+                          **AMG_CG}),
+        ("Q1", "matrix-free", {"Mesh refinement": {"Number of cycles": "6"},
+                               **MATRIX_FREE}),
+        ("Q2", "matrix-free", {"Geometry": {**Q2, "Initial refinement": "1"},
+                               "Mesh refinement": {"Number of cycles": "6"},
+                               **MATRIX_FREE})]),
 ]
 
 
 def degree_2(repeat):
     """Q1 against Q2: one linear solve per dof and core on the last cycle,
-    each measured in the same run as its contact solve, the two degrees run
-    in turn; returns the section of doc/performance.md."""
+    each measured in the same run as its contact solve, a scene's runs in
+    turn; returns the section of doc/performance.md."""
     rows = []
     cases = DEGREE_CASES[:1] if common.SMOKE else DEGREE_CASES
-    for name, scene, q1, q2 in cases:
+    for name, scene, runs in cases:
         slug = name.split()[0]
-        measured = measure_in_turn([(slug + "_q1", scene, q1, 0),
-                                    (slug + "_q2", scene, q2, 0)], repeat)
+        keys = ["%s_%s_%s" % (slug, element.lower(), operator.lower()
+                              .replace("-", "_"))
+                for element, operator, _ in runs]
+        measured = measure_in_turn(
+            [(key, scene, overrides, 0)
+             for key, (_, _, overrides) in zip(keys, runs)], repeat)
         per_dof = {}
-        for degree in ("q1", "q2"):
-            last = measured[slug + "_" + degree][-1]
-            per_dof[degree] = 1e6 * last["linear_solve"] / last["dofs"]
-            rows.append([name if degree == "q1" else "",
-                         degree.upper(), "{:,}".format(int(last["dofs"])),
+        shown = name
+        for key, (element, operator, _) in zip(keys, runs):
+            last = measured[key][-1]
+            per_dof[(element, operator)] = (1e6 * last["linear_solve"] /
+                                            last["dofs"])
+            rows.append([shown, element, operator,
+                         "{:,}".format(int(last["dofs"])),
                          "%.3f" % last["linear_solve"],
-                         "%.2f" % per_dof[degree], "%.2f" % last["ratio"]])
-        rows.append(["", "Q2 / Q1", "", "",
-                     "%.2f" % (per_dof["q2"] / per_dof["q1"]), ""])
-    text = common.table(["scene", "element", "last cycle dofs",
+                         "%.2f" % per_dof[(element, operator)],
+                         "%.2f" % last["ratio"]])
+            shown = ""
+        for operator in dict.fromkeys(op for _, op, _ in runs):
+            if ("Q1", operator) in per_dof and ("Q2", operator) in per_dof:
+                rows.append(["", "Q2 / Q1", operator, "", "", "%.2f" % (
+                    per_dof[("Q2", operator)] / per_dof[("Q1", operator)]),
+                    ""])
+    text = common.table(["scene", "element", "operator", "last cycle dofs",
                          "linear solve [s]", "per dof [µs]",
                          "contact solve / linear solve"], rows)
     print("Degree 2 against degree 1\n\n" + text)
-    return ("One linear solve on the last cycle, assembled operator (direct "
-            "in 2D, AMG-CG in 3D), one process, medians of %d runs, the two "
-            "degrees in turn:\n\n%s" % (repeat, text))
+    return ("One linear solve on the last cycle (direct in 2D; in 3D the "
+            "assembled operator with AMG-CG and the matrix-free one with "
+            "geometric multigrid, Q2's stepping down to Q1 on its own mesh "
+            "first), one process, medians of %d runs, a scene's runs in "
+            "turn:\n\n%s" % (repeat, text))
 
 
 def friction_3d(repeat):
