@@ -48,36 +48,17 @@ namespace signorini
     }
 #endif
 
-    /** y = K x, K stored by columns: a column's n entries times x_j.
+    /** y = K x, K stored by columns, a column's n entries @p stride apart
+     * (zeros between: a padded column fills whole registers, where 81 rows
+     * left the compiler to scalar code): a column times x_j at a time.
      * Always inlined, so that each kernel's copy compiles it for its own
      * instruction set (left to itself, the compiler calls one SSE2 copy at
      * n = 81). */
-    template <unsigned int n, typename Number>
+    template <unsigned int n, unsigned int stride, typename Number>
     inline __attribute__((always_inline)) void
     apply_columns(const Number *__restrict K,
                   const Number *__restrict x,
                   Number *__restrict y)
-    {
-      Number sum[n];
-      for (unsigned int i = 0; i < n; ++i)
-        sum[i] = K[i] * x[0];
-      for (unsigned int j = 1; j < n; ++j)
-        for (unsigned int i = 0; i < n; ++i)
-          sum[i] += K[j * n + i] * x[j];
-      for (unsigned int i = 0; i < n; ++i)
-        y[i] = sum[i];
-    }
-
-    // The kernels of a quadrilateral (n = 8) and a hexahedron (n = 24) in
-    // Number: plain functions, which target_clones copies per instruction set.
-    /** apply_columns() of a matrix whose columns are padded to @p stride
-     * entries (zeros): the sums then fill whole registers, where 81 rows
-     * left the compiler to scalar code. */
-    template <unsigned int n, unsigned int stride, typename Number>
-    inline __attribute__((always_inline)) void
-    apply_padded_columns(const Number *__restrict K,
-                         const Number *__restrict x,
-                         Number *__restrict y)
     {
       Number sum[stride];
       for (unsigned int i = 0; i < stride; ++i)
@@ -89,31 +70,34 @@ namespace signorini
         y[i] = sum[i];
     }
 
+    // The kernels of Q1's quadrilateral (n = 8) and hexahedron (n = 24),
+    // and of Q2's (18 and 81, padded to 24 and 96), in Number: plain
+    // functions, which target_clones copies per instruction set.
 #define SIGNORINI_CELL_KERNELS(Number)                                       \
   SIGNORINI_WIDE_KERNEL void apply_quadrilateral(const Number *__restrict K, \
                                                  const Number *__restrict x, \
                                                  Number *__restrict y)       \
   {                                                                          \
-    apply_columns<8>(K, x, y);                                               \
+    apply_columns<8, 8>(K, x, y);                                            \
   }                                                                          \
   SIGNORINI_WIDE_KERNEL void apply_hexahedron(const Number *__restrict K,    \
                                               const Number *__restrict x,    \
                                               Number *__restrict y)          \
   {                                                                          \
-    apply_columns<24>(K, x, y);                                              \
+    apply_columns<24, 24>(K, x, y);                                          \
   }                                                                          \
   SIGNORINI_WIDE_KERNEL void apply_quadrilateral_q2(                         \
     const Number *__restrict K,                                              \
     const Number *__restrict x,                                              \
     Number *__restrict y)                                                    \
   {                                                                          \
-    apply_padded_columns<18, 24>(K, x, y);                                   \
+    apply_columns<18, 24>(K, x, y);                                          \
   }                                                                          \
   SIGNORINI_WIDE_KERNEL void apply_hexahedron_q2(const Number *__restrict K, \
                                                  const Number *__restrict x, \
                                                  Number *__restrict y)       \
   {                                                                          \
-    apply_padded_columns<81, 96>(K, x, y);                                   \
+    apply_columns<81, 96>(K, x, y);                                          \
   }
 
     SIGNORINI_CELL_KERNELS(double)
@@ -121,8 +105,7 @@ namespace signorini
     SIGNORINI_CELL_KERNELS(float)
 #undef SIGNORINI_CELL_KERNELS
 
-    /** The padded length of a column of n entries (see
-     * apply_padded_columns()). */
+    /** The padded length of a column of n entries (see apply_columns()). */
     unsigned int
     padded(const unsigned int n)
     {

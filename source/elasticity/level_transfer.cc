@@ -31,6 +31,24 @@ namespace signorini
         }
       return cell;
     }
+
+    /** y = R x, or R^T x if @p transpose, R given by its nonzero entries
+     * (finer dof, coarse dof, weight); y has @p n_out entries. */
+    template <typename Entries>
+    void
+    apply_raise(const Entries     &raise,
+                const bool         transpose,
+                const double      *x,
+                double            *y,
+                const unsigned int n_out)
+    {
+      std::fill(y, y + n_out, 0.);
+      for (const auto &[fine, coarse, weight] : raise)
+        if (transpose)
+          y[coarse] += weight * x[fine];
+        else
+          y[fine] += weight * x[coarse];
+    }
   } // namespace
 
   template <int dim>
@@ -355,10 +373,7 @@ namespace signorini
         const double *values = x;
         if (!pair.raise.empty())
           {
-            for (unsigned int i = 0; i < n_fine; ++i)
-              y[i] = 0.;
-            for (const auto &[i, j, weight] : pair.raise)
-              y[i] += weight * x[j];
+            apply_raise(pair.raise, false, x, y, n_fine);
             values = y;
           }
         else if (embedding != identity)
@@ -411,10 +426,7 @@ namespace signorini
         const double *values = x;
         if (!pair.raise.empty())
           {
-            for (unsigned int j = 0; j < n; ++j)
-              y[j] = 0.;
-            for (const auto &[i, j, weight] : pair.raise)
-              y[j] += weight * x[i];
+            apply_raise(pair.raise, true, x, y, n);
             values = y;
           }
         else if (embedding != identity)
