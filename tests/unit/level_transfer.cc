@@ -5,7 +5,8 @@
 // locally with hanging nodes; and LevelTransfer between each pair of levels
 // carries a linear field (zero on the clamped face) exactly, zero at the
 // constrained dofs, with its restriction the transpose of its prolongation: (P
-// x, y) = (x, R y).
+// x, y) = (x, R y). The last pair is the p-step of a Q2 operator's multigrid:
+// Q1 and Q2 on the finest mesh.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -82,14 +83,17 @@ main(int argc, char **argv)
               << '\n';
 
   const FESystem<3>                                       fe(FE_Q<3>(1), 3);
+  const FESystem<3>                                       fe_q2(FE_Q<3>(2), 3);
   std::vector<std::unique_ptr<DoFHandler<3>>>             dofs;
   std::vector<std::unique_ptr<AffineConstraints<double>>> constraints;
   std::vector<const DoFHandler<3> *>                      dof_pointers;
   std::vector<const AffineConstraints<double> *>          constraint_pointers;
-  for (const auto &level_mesh : ours)
+  for (unsigned int level = 0; level <= ours.size(); ++level)
     {
-      dofs.push_back(std::make_unique<DoFHandler<3>>(*level_mesh));
-      dofs.back()->distribute_dofs(fe);
+      const bool raised = level == ours.size();
+      dofs.push_back(
+        std::make_unique<DoFHandler<3>>(*ours[raised ? level - 1 : level]));
+      dofs.back()->distribute_dofs(raised ? fe_q2 : fe);
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(*dofs.back(), relevant);
       constraints.push_back(std::make_unique<AffineConstraints<double>>());
@@ -131,7 +135,7 @@ main(int argc, char **argv)
       if (v.in_local_range(line.index))
         v(line.index) = 0.;
   };
-  for (unsigned int level = 1; level < ours.size(); ++level)
+  for (unsigned int level = 1; level < dofs.size(); ++level)
     {
       if (first_process())
         std::cout << "levels " << level - 1 << " -> " << level << " ("
