@@ -5,8 +5,10 @@
 // Haswell without AVX-512. Whichever copy runs, CellMatrices::apply computes
 // y = K x: in double precision to the round-off of a sum of n products
 // (relative 1e-14 of sum |K_ij x_j|), in single precision (the matrix
-// rounded to float) to that of floats (1e-5), for quadrilaterals (n = 8) and
-// hexahedra (n = 24), for several matrices, each found by its key.
+// rounded to float) to that of floats (1e-5), for Q1's quadrilaterals (n = 8)
+// and hexahedra (n = 24) and Q2's (n = 18 and 81, stored with their columns
+// padded to 24 and 96 entries), for several matrices, each found by its key,
+// and matrix() gives each entry back at its padded place.
 // (tests/processor/ runs this and every test on the other copies.)
 
 #include <signorini/elasticity/cell_matrices.h>
@@ -41,12 +43,12 @@ main()
   if (chosen != expected)
     checks::failed();
 
-  for (const unsigned int n : {8u, 24u})
+  for (const unsigned int n : {8u, 24u, 18u, 81u})
     {
       CellMatrices matrices;
       matrices.reinit(n);
       double worst = 0., worst_single = 0.;
-      bool   found = true;
+      bool   found = true, stored = true;
       for (unsigned int m = 0; m < 3; ++m)
         {
           // A symmetric matrix with entries of both signs and of sizes
@@ -61,6 +63,12 @@ main()
           const unsigned int index = matrices.add({1. + m, 0.5, 0., 2.}, K);
           found                    = found && index == m &&
                   matrices.find({1. + m, 0.5, 0., 2.}) == index;
+          const double      *kept   = matrices.matrix(index);
+          const unsigned int stride = matrices.column_stride();
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int i = 0; i < stride; ++i)
+              stored =
+                stored && kept[j * stride + i] == (i < n ? K[j * n + i] : 0.);
           std::vector<double> x(n), y(n);
           std::vector<float>  xf(n), yf(n);
           for (unsigned int j = 0; j < n; ++j)
@@ -86,6 +94,7 @@ main()
         }
       std::cout << "n = " << n << ", 3 matrices:\n";
       checks::expect("each matrix found by its key", found);
+      checks::expect("each entry stored at its place, zeros between", stored);
       checks::expect("a key not stored is not found",
                      matrices.find({9., 0.5, 0., 2.}) == CellMatrices::none);
       checks::report("max |K x - exact| / sum |K_ij x_j|, double",
