@@ -52,7 +52,9 @@ namespace signorini
     if (!chosen)
       {
         bool matrix_free = dim == 3 && !discretisation.simplex() && pointwise;
-        if (matrix_free)
+        // At degree 2 on any hexahedra; at degree 1 where at least half the
+        // cells are parallelepipeds.
+        if (matrix_free && discretisation.degree() == 1)
           {
             double counts[2] = {0., 0.};
             for (const auto &cell :
@@ -65,8 +67,7 @@ namespace signorini
             Utilities::MPI::sum(counts,
                                 discretisation.mpi_communicator(),
                                 counts);
-            matrix_free =
-              counts[0] >= 0.5 * counts[1] || discretisation.degree() > 1;
+            matrix_free = counts[0] >= 0.5 * counts[1];
           }
         chosen = make(matrix_free);
       }

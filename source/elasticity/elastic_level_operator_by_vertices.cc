@@ -1,5 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <signorini/discretisation/discretisation.h>
@@ -57,10 +58,13 @@ namespace signorini
     // vertex 0 (vertices 1, 2, 4): its Jacobian, constant. Its shape's key
     // is the inverse Jacobian rounded to 40 bits below its largest entry,
     // so that cells equal up to round-off share a matrix.
-    FEValues<dim>       fe_values(mapping,
+    FEValues<dim>     fe_values(mapping,
                             dofs.get_fe(),
                             QGauss<dim>(fe_degree + 1),
                             elastic_update_flags(material));
+    const auto *const polynomial =
+      dynamic_cast<const MappingQ<dim> *>(&mapping);
+    const bool follows_manifolds = polynomial && polynomial->get_degree() > 1;
     CellStiffness<dim>  stiffness(material);
     FullMatrix<double>  cell_matrix(n, n);
     std::vector<double> columns(n * n);
@@ -83,9 +87,10 @@ namespace signorini
                   expected[a] += jacobian[a][d];
             all = all && expected.distance(cell->vertex(v)) <= tolerance;
           }
-        // Above degree 1 the mapping follows the manifolds: a cell on a
-        // curved one is not the image of its vertices.
-        all = all && (fe_degree == 1 || on_flat_manifolds(cell));
+        // A mapping above degree 1 follows the manifolds (at degree 2,
+        // and on the Q1 levels below it): a cell on a curved one is not
+        // the image of its vertices.
+        all = all && (!follows_manifolds || on_flat_manifolds(cell));
         if (!all)
           break;
         const Tensor<2, dim> inverse = invert(jacobian);
