@@ -160,6 +160,7 @@ namespace signorini
                            Quadrature<dim>(base.get_unit_support_points()),
                            update_quadrature_points);
     std::vector<types::global_dof_index>     cell_dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index>     face_dofs;
     std::array<types::global_dof_index, dim> dofs;
     for (const auto &cell :
          discretisation.dof_handler().active_cell_iterators())
@@ -181,17 +182,23 @@ namespace signorini
                     }
                   continue;
                 }
-              // Degree 2 (quadrilaterals and hexahedra): the cell's nodes
-              // on the face.
+              // Degree 2: the cell's nodes on the face (the face's own
+              // dofs: simplex elements do not say which of theirs have
+              // support on a face).
               if (!mapped)
                 {
                   cell->get_dof_indices(cell_dofs);
                   at_nodes.reinit(cell);
                   mapped = true;
                 }
+              face_dofs.resize(fe.n_dofs_per_face(f));
+              face->get_dof_indices(face_dofs);
+              std::sort(face_dofs.begin(), face_dofs.end());
               for (unsigned int b = 0; b < base.n_dofs_per_cell(); ++b)
-                if (fe.has_support_on_face(fe.component_to_system_index(0, b),
-                                           f))
+                if (std::binary_search(
+                      face_dofs.begin(),
+                      face_dofs.end(),
+                      cell_dofs[fe.component_to_system_index(0, b)]))
                   {
                     for (unsigned int d = 0; d < dim; ++d)
                       dofs[d] = cell_dofs[fe.component_to_system_index(d, b)];

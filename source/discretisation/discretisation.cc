@@ -12,6 +12,7 @@
 
 #include <signorini/base/owned_values.h>
 #include <signorini/discretisation/discretisation.h>
+#include <signorini/discretisation/simplex_mapping.h>
 #include <signorini/discretisation/vertex_values.h>
 #include <signorini/input/input_error.h>
 #include <signorini/input/parsed_function.h>
@@ -22,6 +23,45 @@
 namespace signorini
 {
   using namespace dealii;
+
+  namespace
+  {
+    /** The rule of the lumped contact masses at degree 2: points at the
+     * nodes of a face, with positive weights. Quadrilateral faces and
+     * edges: Gauss-Lobatto (1/6, 4/6, 1/6 along an edge, their tensor
+     * products on a square). A triangle's P2 nodes have no positive rule
+     * exact to degree 2 (its vertex weights vanish), so a triangle is
+     * lumped as the four triangles its mid-nodes cut it into, each P1
+     * lumped: a twelfth of the area at a vertex, a quarter at a mid-node
+     * (exact to degree 1). Degree 1: the face's Gauss rule. */
+    template <int dim>
+    Quadrature<dim - 1>
+    contact_nodes_rule(const ReferenceCell       &cell_type,
+                       const unsigned int         degree,
+                       const Quadrature<dim - 1> &face_rule)
+    {
+      if (degree == 1)
+        return face_rule;
+      if (dim == 2 || cell_type.is_hyper_cube())
+        return QGaussLobatto<dim - 1>(degree + 1);
+      std::vector<Point<dim - 1>>                points(6);
+      std::vector<double>                        weights(6);
+      const std::array<std::array<double, 2>, 6> at = {{{{0., 0.}},
+                                                        {{1., 0.}},
+                                                        {{0., 1.}},
+                                                        {{.5, 0.}},
+                                                        {{.5, .5}},
+                                                        {{0., .5}}}};
+      for (unsigned int i = 0; i < 6; ++i)
+        {
+          for (unsigned int d = 0; d < dim - 1; ++d)
+            points[i][d] = at[i][d];
+          // The reference triangle's area is 1/2.
+          weights[i] = i < 3 ? 0.5 / 12 : 0.5 / 4;
+        }
+      return Quadrature<dim - 1>(points, weights);
+    }
+  } // namespace
 
   template <int dim>
   Discretisation<dim>::Discretisation(
@@ -83,29 +123,21 @@ namespace signorini
 
     const ReferenceCell cell_type = mesh->get_reference_cells()[0];
     const unsigned int  degree    = geometry.element_degree;
-    if (simplex_cells && degree > 1)
-      throw InputError("Geometry/Element degree",
-                       "is 2, but the mesh has triangles/tetrahedra, which "
-                       "take degree 1 only so far (P2 is not available): "
-                       "use quadrilaterals/hexahedra (Cell type = "
-                       "quadrilateral) for Q2");
     if (simplex_cells)
-      element = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
+      element = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
     else
       element = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
     linear_mapping = &cell_type.template get_default_linear_mapping<dim>();
     // Degree 2: the cells follow the manifolds of curved boundaries (the
     // generated shapes' spheres, a .geo's curves) with their mid-nodes.
-    if (degree > 1)
+    if (degree > 1 && simplex_cells)
+      curved_mapping = std::make_unique<SimplexMapping<dim>>();
+    else if (degree > 1)
       curved_mapping = std::make_unique<MappingQ<dim>>(degree);
     cell_rule = cell_type.template get_gauss_type_quadrature<dim>(degree + 1);
     face_rule = cell_type.face_reference_cell(0)
                   .template get_gauss_type_quadrature<dim - 1>(degree + 1);
-    // Q2's contact nodes: lumped on the face's Gauss-Lobatto points, its
-    // nodes (weights 1/6, 4/6, 1/6 along an edge, all positive).
-    contact_face_rule =
-      degree > 1 ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(degree + 1)) :
-                   face_rule;
+    contact_face_rule = contact_nodes_rule<dim>(cell_type, degree, face_rule);
     setup_dofs();
   }
 
@@ -349,6 +381,15 @@ namespace signorini
   Discretisation<dim>::contact_face_quadrature() const
   {
     return contact_face_rule;
+  }
+
+  template <int dim>
+  Quadrature<dim - 1>
+  Discretisation<dim>::fine_face_quadrature() const
+  {
+    if (simplex_cells && dim == 3)
+      return QGaussSimplex<dim - 1>(4);
+    return QGauss<dim - 1>(6);
   }
 
   template <int dim>

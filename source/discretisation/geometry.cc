@@ -226,7 +226,8 @@ namespace signorini
       cell_types.pattern(),
       "quadrilateral: quadrilateral/hexahedral cells with Q1 "
       "elements (Q2 with Element degree = 2); simplex: "
-      "triangles/tetrahedra with P1 elements. rectangle: simplex splits each "
+      "triangles/tetrahedra with P1 elements (P2). rectangle: simplex splits "
+      "each "
       "quadrilateral into 8 triangles (hexahedron into 24 "
       "tetrahedra); automatic is quadrilateral. gmsh with a "
       ".geo: Gmsh makes triangles/tetrahedra, or recombined "
@@ -264,11 +265,11 @@ namespace signorini
                       entry_text::of(defaults.element_degree),
                       Patterns::Integer(1, 2),
                       "Polynomial degree of the displacement: 1 (Q1, P1) or "
-                      "2 (Q2 on quadrilaterals/hexahedra, whose cells follow "
-                      "curved boundaries by a mapping of degree 2; contact "
-                      "at every node of the contact faces, vertices and "
-                      "mid-nodes). Degree 2 takes the assembled operator; "
-                      "triangles/tetrahedra take degree 1 only so far.");
+                      "2 (Q2 on quadrilaterals/hexahedra, P2 on "
+                      "triangles/tetrahedra; the cells follow curved "
+                      "boundaries by a mapping of degree 2, and contact "
+                      "holds at every node of the contact faces, vertices "
+                      "and mid-nodes).");
     prm.leave_subsection();
   }
 
@@ -491,7 +492,9 @@ namespace signorini
                                    comm);
                 // Quadrilaterals and hexahedra are refined, not remeshed:
                 // their new boundary vertices follow the .geo's curves.
-                if (coarse_mesh.all_reference_cells_are_hyper_cube())
+                // Cells of degree 2 put their mid-nodes on them.
+                if (coarse_mesh.all_reference_cells_are_hyper_cube() ||
+                    element_degree > 1)
                   attach_gmsh_geometry(coarse_mesh, mesh_file, comm);
               }
             else

@@ -185,6 +185,13 @@ namespace signorini
             coarse_mesh.set_manifold(
               entry->second, GmshEntityManifold<dim>(model, dim - 1, best));
           face->set_manifold_id(entry->second);
+          // In 3D the face's edges too (new points on an edge, a mapping's
+          // mid-nodes on it, come from the edge's manifold), unless another
+          // curved face has one for them.
+          if (dim == 3)
+            for (unsigned int l = 0; l < face->n_lines(); ++l)
+              if (face->line(l)->manifold_id() == numbers::flat_manifold_id)
+                face->line(l)->set_manifold_id(entry->second);
         }
   }
 

@@ -108,15 +108,15 @@ namespace signorini
       return "";
     if (volumetric_strain == VolumetricStrain::cell_mean)
       throw InputError("Material/Volumetric strain",
-                       "'cell mean' needs quadrilaterals or hexahedra (Q1); "
-                       "this mesh has triangles or tetrahedra (P1)");
+                       "'cell mean' needs quadrilaterals or hexahedra; this "
+                       "mesh has triangles or tetrahedra");
     if (poisson_ratio < nearly_incompressible ||
         plane_state == PlaneState::plane_stress)
       return "";
     return "Material/Poisson's ratio = " + number(poisson_ratio) +
-           ": P1 triangles and tetrahedra lock as nu -> 0.5 (the body comes "
-           "out too stiff); mesh with quadrilaterals or hexahedra (Q1) for "
-           "the mean dilatation";
+           ": triangles and tetrahedra lock as nu -> 0.5 (the body comes out "
+           "too stiff; P1 more than P2); mesh with quadrilaterals or "
+           "hexahedra for the mean dilatation";
   }
 
   template <int dim>

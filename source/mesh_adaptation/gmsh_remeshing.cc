@@ -3,10 +3,11 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <signorini/discretisation/gmsh_geometry.h>
 #include <signorini/discretisation/gmsh_mesher.h>
 #include <signorini/mesh_adaptation/gmsh_remeshing.h>
+#include <signorini/mesh_adaptation/node_transfer.h>
 #include <signorini/mesh_adaptation/size_field.h>
-#include <signorini/mesh_adaptation/vertex_transfer.h>
 
 #include <cmath>
 
@@ -43,7 +44,7 @@ namespace signorini
                             const std::function<void()>         &setup_system,
                             const std::vector<const VectorType *> &vectors)
   {
-    const VertexTransfer<dim> transfer(serial, dof_handler, vectors, comm);
+    const NodeTransfer<dim> transfer(serial, dof_handler, vectors, comm);
 
     // The indicators of every cell of the serial mesh, on every process:
     // the cells of a fully distributed triangulation are the serial mesh's
@@ -92,6 +93,9 @@ namespace signorini
             };
           }
         mesh_geometry_file(geometry.mesh_file, options, next, comm);
+        // P2's mid-nodes on the .geo's curves.
+        if (geometry.element_degree > 1)
+          attach_gmsh_geometry(next, geometry.mesh_file, comm);
       }
     serial.clear();
     serial.copy_triangulation(next);
@@ -131,6 +135,9 @@ namespace signorini
       create_description_from_triangulation(partitioned, comm);
     auto triangulation =
       std::make_unique<parallel::fullydistributed::Triangulation<dim>>(comm);
+    for (const auto id : serial.get_manifold_ids())
+      if (id != numbers::flat_manifold_id)
+        triangulation->set_manifold(id, serial.get_manifold(id));
     triangulation->create_triangulation(description);
     return triangulation;
   }

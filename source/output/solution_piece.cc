@@ -109,10 +109,14 @@ namespace signorini
       }
     else
       {
+        // P2's nodes are VTK's Lagrange triangle's and tetrahedron's, in
+        // its order (vertices, then the edges' mid-nodes edge by edge).
         unit_points = fe.base_element(0).get_unit_support_points();
         vtk_order.resize(unit_points.size());
         for (unsigned int q = 0; q < unit_points.size(); ++q)
-          vtk_order[vtk_lagrange_index<dim>(unit_points[q])] = q;
+          vtk_order[kind.is_simplex() ?
+                      q :
+                      vtk_lagrange_index<dim>(unit_points[q])] = q;
       }
     const unsigned int    n_vertices = unit_points.size();
     const std::size_t     n_points   = cells.size() * n_vertices;

@@ -182,13 +182,10 @@ namespace signorini
     for (unsigned int i = 0; i < nodes.size(); ++i)
       node_at[nodes[i].scalar_dof] = i;
     const Function<dim>      *exact = reference.contact_pressure.get();
-    const Quadrature<dim - 1> rule =
-      discretisation.simplex() && dim == 3 ?
-        Quadrature<dim - 1>(QGaussSimplex<dim - 1>(4)) :
-        Quadrature<dim - 1>(QGauss<dim - 1>(6));
-    const auto       &fe          = discretisation.fe();
-    const auto       &constraints = discretisation.constraints();
-    FEFaceValues<dim> fe_face_values(
+    const Quadrature<dim - 1> rule  = discretisation.fine_face_quadrature();
+    const auto               &fe    = discretisation.fe();
+    const auto               &constraints = discretisation.constraints();
+    FEFaceValues<dim>         fe_face_values(
       discretisation.mapping(),
       fe,
       rule,

@@ -59,7 +59,7 @@ namespace signorini
     const unsigned int n_points = base.n_dofs_per_cell();
     FEFaceValues<dim>  fe_face_values(discretisation.mapping(),
                                      fe,
-                                     QGauss<dim - 1>(6),
+                                     discretisation.fine_face_quadrature(),
                                      update_values | update_JxW_values |
                                        discretisation.weight_flags());
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());

@@ -75,8 +75,9 @@ namespace signorini
         }
     // Pairs of nodes next to each other along the contact boundary: in 2D
     // a face's ends (at degree 2 each end with its mid-node); in 3D the
-    // lines of a face's grid of nodes (its edges; at degree 2 also from
-    // the edges' mid-nodes through the centre).
+    // lines of a face's grid of nodes (its edges, at degree 2 through their
+    // mid-nodes; on a quadrilateral also from the edges' mid-nodes through
+    // the centre).
     const auto &fe   = discretisation.fe();
     const auto  pair = [&](const types::global_dof_index a,
                           const types::global_dof_index b) {
@@ -103,12 +104,21 @@ namespace signorini
             pair(vertex(0), middle);
             pair(middle, vertex(1));
           }
-        else if (face->n_vertices() == 3)
+        else if (face->n_vertices() == 3 && fe.degree == 1)
           {
             pair(vertex(0), vertex(1));
             pair(vertex(1), vertex(2));
             pair(vertex(2), vertex(0));
           }
+        else if (face->n_vertices() == 3)
+          // A triangle's edges through their mid-nodes.
+          for (unsigned int l = 0; l < 3; ++l)
+            {
+              const auto line   = face->line(l);
+              const auto middle = line->dof_index(0);
+              pair(line->vertex_dof_index(0, 0), middle);
+              pair(middle, line->vertex_dof_index(1, 0));
+            }
         else if (fe.degree == 1)
           {
             pair(vertex(0), vertex(1));

@@ -198,9 +198,16 @@ namespace signorini
     const dealii::Quadrature<dim - 1> &
     face_quadrature() const;
     /** The rule of the contact nodes' lumped masses: the face rule at
-     * degree 1, Gauss-Lobatto at degree 2 (the nodes themselves). */
+     * degree 1; at degree 2 the nodes themselves with positive weights
+     * (Gauss-Lobatto on edges and quadrilaterals; a triangle lumped as the
+     * four its mid-nodes cut it into). */
     const dealii::Quadrature<dim - 1> &
     contact_face_quadrature() const;
+    /** The rule of the contact zone's integrals (the pressure's, its
+     * error's, the pressure recovery's mass matrix): far finer than the
+     * element needs, so that they are those of the fields. */
+    dealii::Quadrature<dim - 1>
+    fine_face_quadrature() const;
     const dealii::IndexSet &
     locally_owned_dofs() const;
     const dealii::IndexSet &

@@ -12,9 +12,10 @@ namespace signorini
 {
   /**
    * The curved boundary of a mesh made by Gmsh from a .geo file, followed
-   * by refinement: a face of the coarse mesh on a curve of the .geo (in 3D
-   * a surface) that is not straight (flat) gets a manifold that puts each
-   * new vertex at the closest point of that curve, found by Gmsh from the
+   * by refinement and by the mid-nodes of degree 2: a face of the coarse
+   * mesh on a curve of the .geo (in 3D a surface, and the face's edges)
+   * that is not straight (flat) gets a manifold that puts each new vertex
+   * or mid-node at the closest point of that curve, found by Gmsh from the
    * .geo itself (either geometry kernel). Without it, quadrilaterals and
    * hexahedra refined cycle by cycle keep the coarse mesh's straight edges:
    * a disk stays its coarse polygon, and the contact pressure spikes at its

@@ -19,7 +19,7 @@ namespace signorini
    * 1 + (2^d - 1) x `Refine fraction` - (1 - 2^-d) x `Coarsen fraction`)
    * or with every size halved (global). Other simplex meshes are refined
    * globally. The displacement and pressure are carried over by
-   * VertexTransfer, so that a cycle starts from the previous one's
+   * NodeTransfer, so that a cycle starts from the previous one's
    * solution and active set.
    */
   template <int dim>

@@ -1,7 +1,9 @@
-// VertexTransfer between simplex meshes, on one process and on two (the
+// NodeTransfer between simplex meshes, on one process and on two (the
 // meshes then fully distributed as GmshRemeshing does): two linear fields
 // carried to a mesh that shares almost no vertex with the old one and sticks
-// out of it (exact for P1, also outside), and a nonlinear field carried to
+// out of it (exact for P1, also outside), two quadratic fields carried so
+// as P2 (exact at the vertices and mid-nodes, also outside), and a
+// nonlinear field carried to
 // the old mesh refined globally (old vertices keep their values, new ones
 // take the mean of their edge's ends, as SolutionTransfer would give), and
 // to the refined mesh with the new boundary vertices moved out (the linear
@@ -19,7 +21,7 @@
 #include <deal.II/grid/tria_description.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <signorini/mesh_adaptation/vertex_transfer.h>
+#include <signorini/mesh_adaptation/node_transfer.h>
 
 #include "checks.h"
 #include <algorithm>
@@ -86,7 +88,18 @@ namespace
     return mesh;
   }
 
-  /** The ghosted P1 vector of @p field's vertex values. */
+  /** The position of node @p b of a straight simplex @p cell: a vertex, or
+   * the middle of an edge (P2). */
+  template <typename Cell>
+  auto
+  node(const Cell &cell, const unsigned int b)
+  {
+    return b < cell->n_vertices() ?
+             cell->vertex(b) :
+             cell->line(b - cell->n_vertices())->center();
+  }
+
+  /** The ghosted P1 or P2 vector of @p field's node values. */
   template <int dim>
   VectorType
   vertex_values(const DoFHandler<dim> &dof_handler, const Field &field)
@@ -94,14 +107,22 @@ namespace
     IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     const IndexSet &owned = dof_handler.locally_owned_dofs();
+    const auto     &fe    = dof_handler.get_fe();
     VectorType      values(owned, MPI_COMM_WORLD);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          for (unsigned int d = 0; d < dim; ++d)
-            if (owned.is_element(cell->vertex_dof_index(v, d)))
-              values(cell->vertex_dof_index(v, d)) =
-                field(to_3d(cell->vertex(v)), d);
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int b = 0; b < fe.base_element(0).n_dofs_per_cell();
+               ++b)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const auto i = dofs[fe.component_to_system_index(d, b)];
+                if (owned.is_element(i))
+                  values(i) = field(to_3d(node(cell, b)), d);
+              }
+        }
     values.compress(VectorOperation::insert);
     VectorType ghosted(owned, relevant, MPI_COMM_WORLD);
     ghosted = values;
@@ -120,9 +141,10 @@ namespace
     const Triangulation<dim> &new_serial,
     const std::vector<Field> &fields,
     const std::function<double(const Point<dim> &, unsigned int, unsigned int)>
-      &expected)
+                      &expected,
+    const unsigned int degree = 1)
   {
-    const FESystem<dim> fe(FE_SimplexP<dim>(1), dim);
+    const FESystem<dim> fe(FE_SimplexP<dim>(degree), dim);
 
     auto            old_mesh = distribute(old_serial);
     DoFHandler<dim> old_dofs(*old_mesh);
@@ -134,34 +156,39 @@ namespace
     for (const auto &vector : old_vectors)
       pointers.push_back(&vector);
 
-    const VertexTransfer<dim> vertex_transfer(old_serial,
-                                              old_dofs,
-                                              pointers,
-                                              MPI_COMM_WORLD);
+    const NodeTransfer<dim> transfer(old_serial,
+                                     old_dofs,
+                                     pointers,
+                                     MPI_COMM_WORLD);
 
     auto            new_mesh = distribute(new_serial);
     DoFHandler<dim> new_dofs(*new_mesh);
     new_dofs.distribute_dofs(fe);
-    const auto result = vertex_transfer.interpolate(new_dofs);
+    const auto result = transfer.interpolate(new_dofs);
 
-    const IndexSet     &owned = new_dofs.locally_owned_dofs();
-    std::vector<double> difference(fields.size(), 0.);
-    std::vector<bool>   seen(new_dofs.n_dofs(), false);
+    const IndexSet                      &owned = new_dofs.locally_owned_dofs();
+    std::vector<double>                  difference(fields.size(), 0.);
+    std::vector<bool>                    seen(new_dofs.n_dofs(), false);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : new_dofs.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const auto i = cell->vertex_dof_index(v, d);
-              if (!owned.is_element(i) || seen[i])
-                continue;
-              seen[i] = true;
-              for (unsigned int k = 0; k < fields.size(); ++k)
-                difference[k] =
-                  std::max(difference[k],
-                           std::abs(result[k](i) -
-                                    expected(cell->vertex(v), d, k)));
-            }
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int b = 0; b < fe.base_element(0).n_dofs_per_cell();
+               ++b)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const auto i = dofs[fe.component_to_system_index(d, b)];
+                if (!owned.is_element(i) || seen[i])
+                  continue;
+                seen[i] = true;
+                for (unsigned int k = 0; k < fields.size(); ++k)
+                  difference[k] =
+                    std::max(difference[k],
+                             std::abs(result[k](i) -
+                                      expected(node(cell, b), d, k)));
+              }
+        }
     unsigned int compared = 0;
     for (const bool s : seen)
       compared += s;
@@ -232,6 +259,42 @@ namespace
                   [&fields](const Point<dim> &p,
                             unsigned int      d,
                             unsigned int k) { return fields[k](to_3d(p), d); });
+  }
+
+  /** Two quadratic fields (every second-order term in each component),
+   * carried as P2: exact at every node. */
+  template <int dim>
+  void
+  quadratic_to_another_mesh()
+  {
+    if (first_process())
+      std::cout << dim << "D, quadratic fields (P2), [0, 1] in 3 -> "
+                << "[-0.05, 1.05] in " << (dim == 2 ? 5 : 2)
+                << " subdivisions:\n";
+    Triangulation<dim> old_mesh, new_mesh;
+    GridGenerator::subdivided_hyper_cube_with_simplices(old_mesh, 3);
+    GridGenerator::subdivided_hyper_cube_with_simplices(new_mesh,
+                                                        dim == 2 ? 5 : 2,
+                                                        -0.05,
+                                                        1.05);
+    const std::vector<Field> fields = {[](const Point<3> &x, unsigned int c) {
+                                         return 1. + c + 2. * x[0] * x[0] -
+                                                3. * x[0] * x[1] +
+                                                (c + 0.5) * x[1] * x[1] +
+                                                x[2] * (x[0] - 2. * x[2] + c);
+                                       },
+                                       [](const Point<3> &x, unsigned int c) {
+                                         return -4. + (c + 1.) * x[0] * x[1] +
+                                                x[1] * x[2] - x[2] + 0.5 * x[0];
+                                       }};
+    transfer<dim>(
+      old_mesh,
+      new_mesh,
+      fields,
+      [&fields](const Point<dim> &p, unsigned int d, unsigned int k) {
+        return fields[k](to_3d(p), d);
+      },
+      2);
   }
 
   /** The linear extension to @p p of the P1 function of the vertex values
@@ -349,6 +412,8 @@ main(int argc, char **argv)
     std::cout << std::setprecision(10);
   linear_to_another_mesh<2>();
   linear_to_another_mesh<3>();
+  quadratic_to_another_mesh<2>();
+  quadratic_to_another_mesh<3>();
   nonlinear_to_refined_mesh<2>();
   nonlinear_to_refined_mesh<3>();
   nonlinear_to_refined_mesh<2>(true);
