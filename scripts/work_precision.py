@@ -109,11 +109,23 @@ PEER_SCENES = {
 # fraction refines fewer cells away from it (measured: p0 and a within 1 %
 # at 8,955 dofs in about 1 s, where 0.3 needs 83,730 dofs and 6 s).
 Q2 = {"Element degree": "2", "Initial refinement": "1"}
+
+
+def p2(geo):
+    """P2 from the .geo @p geo in prm/, remeshed by Gmsh each cycle."""
+    return {"Type": "gmsh", "Mesh file": os.path.join(common.ROOT, "prm", geo),
+            "Initial refinement": "0", "Element degree": "2"}
+
+
 PEER_RUNS = [
     ("hertz", "signorini Q1", "signorini",
      {"Mesh refinement": {"Number of cycles": "9"}}),
     ("hertz", "signorini Q2", "signorini",
      {"Geometry": Q2, "Mesh refinement": {"Number of cycles": "9"}}),
+    # prm/hertz_cylinder_p2.prm, two cycles on.
+    ("hertz", "signorini P2", "signorini",
+     {"Geometry": p2("hertz_cylinder.geo"),
+      "Mesh refinement": {"Number of cycles": "8"}}),
     ("hertz", "GetFEM P1", "getfem", ["--degree", "1", "--cycles", "9"]),
     ("hertz", "GetFEM P2", "getfem", ["--degree", "2", "--cycles", "8"]),
     ("hertz_sphere", "signorini Q1", "signorini",
@@ -124,6 +136,10 @@ PEER_RUNS = [
     ("hertz_sphere", "signorini Q2", "signorini",
      {"Geometry": Q2, "Mesh refinement": {"Number of cycles": "8",
                                           "Refine fraction": "0.1"}}),
+    # prm/hertz_sphere_p2.prm, one cycle on.
+    ("hertz_sphere", "signorini P2", "signorini",
+     {"Geometry": p2("quarter_ball.geo"),
+      "Mesh refinement": {"Number of cycles": "9"}}),
     ("hertz_sphere", "GetFEM P1", "getfem",
      ["--degree", "1", "--cycles", "4"]),
     ("hertz_sphere", "GetFEM P2", "getfem",
