@@ -1,26 +1,15 @@
 #include <signorini/elasticity/cell_matrices.h>
 
+#include "wide_kernel.h"
 #include <algorithm>
 
 namespace signorini
 {
   namespace
   {
-// One copy of each kernel per instruction set, chosen by the processor the
-// program runs on (GCC's function multi-versioning): Debian's deal.II is
-// compiled for the baseline x86-64, whose registers hold two doubles.
-// The AVX2 copy is chosen by the processor's features (x86-64-v3: AVX2 and
-// FMA), not by its name: `arch=haswell` asks whether the processor is a
-// Haswell, so every AMD processor and every later Intel one without
-// AVX-512 ran the two-double copy (an AMD EPYC, Zen 3: CG of the 1.49M-dof
-// run 19.7 -> 17.1 s on one process, the whole run 49.5 -> 45.6 s).
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-#  define SIGNORINI_AVX512 "avx512f"
-#  define SIGNORINI_AVX2 "arch=x86-64-v3"
-#  define SIGNORINI_WIDE_KERNEL \
-    __attribute__((target_clones(SIGNORINI_AVX512, SIGNORINI_AVX2, "default")))
-
-    // The same choice, by the same rule, told by name.
+    // The choice of SIGNORINI_WIDE_KERNEL (wide_kernel.h), by the same rule,
+    // told by name.
     __attribute__((target("default"))) const char *
     instruction_set()
     {
@@ -39,8 +28,6 @@ namespace signorini
       return "avx512f";
     }
 #else
-#  define SIGNORINI_WIDE_KERNEL
-
     const char *
     instruction_set()
     {
@@ -145,9 +132,6 @@ namespace signorini
       else
         apply_any(n, K, x, y);
     }
-#undef SIGNORINI_WIDE_KERNEL
-#undef SIGNORINI_AVX2
-#undef SIGNORINI_AVX512
   } // namespace
 
   const char *

@@ -6,6 +6,7 @@
 #include <signorini/elasticity/elastic_level_operator.h>
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_map>
 
 namespace signorini
@@ -35,7 +36,11 @@ namespace signorini
     std::vector<CellIterator> cells;
     by_vertices = setup_by_vertices(mapping, cells);
     if (by_vertices)
-      matrix_free.clear();
+      {
+        matrix_free.clear();
+        curved_cells.clear();
+        curved_of_cell.assign(matrix_of_cell.size(), CellMatrices::none);
+      }
     else
       {
         typename MatrixFree<dim, double>::AdditionalData data;
@@ -70,6 +75,8 @@ namespace signorini
     matrix_free.clear();
     cell_matrices.clear();
     matrix_of_cell = {};
+    curved_cells.clear();
+    curved_of_cell = {};
     cell_dofs      = {};
     resolved_dofs  = {};
     direct         = {};
@@ -135,11 +142,31 @@ namespace signorini
     CellEvaluation      phi(matrix_free);
     CellMatrices::Key   key(dim * dim);
     std::vector<double> columns(n * n);
+    curved_cells.reinit(dim, degree, mu, lambda);
+    curved_of_cell.assign(matrix_free.n_cell_batches(), CellMatrices::none);
+    std::vector<double> geometry(phi.n_q_points * dim * dim);
+    // A cell without a matrix (curved, or of a shape beyond
+    // CellMatrices::max_matrices): B_q = sqrt(JxW) J^{-1}, FEEvaluation's
+    // inverse_jacobian() being J^{-T}, entry [j][k] = d xi_k / d x_j.
+    const auto add_curved = [&](const unsigned int cell) {
+      for (unsigned int q = 0; q < phi.n_q_points; ++q)
+        {
+          const auto   inverse = phi.inverse_jacobian(q);
+          const double root    = std::sqrt(phi.JxW(q)[0]);
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int j = 0; j < dim; ++j)
+              geometry[(q * dim + k) * dim + j] = root * inverse[j][k][0];
+        }
+      curved_of_cell[cell] = curved_cells.add(geometry);
+    };
     for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
       {
         phi.reinit(cell);
         if (phi.get_cell_type() > internal::MatrixFreeFunctions::affine)
-          continue;
+          {
+            add_curved(cell);
+            continue;
+          }
         const auto jacobian = phi.inverse_jacobian(0);
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
@@ -151,6 +178,8 @@ namespace signorini
             index = cell_matrices.add(key, columns);
           }
         matrix_of_cell[cell] = index;
+        if (index == CellMatrices::none)
+          add_curved(cell);
       }
   }
 
@@ -196,17 +225,76 @@ namespace signorini
   template <int degree, bool as_given, typename CellNumber>
   void
   ElasticLevelOperator<dim>::apply_cells(
-    const MatrixFree<dim, double>               &data,
+    const MatrixFree<dim, double> &,
     VectorType                                  &dst,
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
   {
-    using CellEvaluation = Evaluation<degree>;
-    // Only the cells without a shape matrix need FEEvaluation (none when
-    // the operator was set up by_vertices, without a MatrixFree).
-    std::unique_ptr<CellEvaluation> phi;
-    constexpr unsigned int          n = CellEvaluation::static_dofs_per_cell;
-    CellNumber                      x[n], y[n];
+    constexpr unsigned int n = dim * Utilities::pow(degree + 1, dim);
+    // x = C src (src itself if @p as_given), dst += C^T y, C the
+    // constraints: a constrained dof is read from, and writes to, its
+    // line's dofs.
+    const auto gather = [&](const unsigned int cell, auto *x) {
+      const unsigned int *dofs =
+        &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
+      for (unsigned int i = 0; i < n; ++i)
+        if (dofs[i] & constrained_flag)
+          {
+            const unsigned int line = dofs[i] & ~constrained_flag;
+            if (as_given)
+              {
+                x[i] = src.local_element(line_dof[line]);
+                continue;
+              }
+            double value = 0.;
+            for (unsigned int e = line_offsets[line];
+                 e < line_offsets[line + 1];
+                 ++e)
+              value += line_entries[e].second *
+                       src.local_element(line_entries[e].first);
+            x[i] = value;
+          }
+        else
+          x[i] = src.local_element(dofs[i]);
+    };
+    const auto scatter = [&](const unsigned int cell, const auto *y) {
+      const unsigned int *dofs =
+        &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
+      for (unsigned int i = 0; i < n; ++i)
+        if (dofs[i] & constrained_flag)
+          {
+            const unsigned int line = dofs[i] & ~constrained_flag;
+            for (unsigned int e = line_offsets[line];
+                 e < line_offsets[line + 1];
+                 ++e)
+              dst.local_element(line_entries[e].first) +=
+                line_entries[e].second * y[i];
+          }
+        else
+          dst.local_element(dofs[i]) += y[i];
+    };
+    // The curved cells of one batch: x by dof, then lane; applied once the
+    // batch is complete, another one begins, or the cells end.
+    constexpr unsigned int          lanes = CurvedCells::lanes;
+    AlignedVector<double>           batch_x(n * lanes), batch_y(n * lanes);
+    std::array<unsigned int, lanes> staged;
+    unsigned int                    staged_batch = CellMatrices::none;
+    const auto                      flush        = [&]() {
+      if (staged_batch == CellMatrices::none)
+        return;
+      curved_cells.apply(staged_batch, batch_x.data(), batch_y.data());
+      double y[n];
+      for (unsigned int l = 0; l < lanes; ++l)
+        if (staged[l] != CellMatrices::none)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              y[i] = batch_y[i * lanes + l];
+            scatter(staged[l], y);
+          }
+      staged_batch = CellMatrices::none;
+    };
+
+    CellNumber x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
       if (direct[cell])
         {
@@ -223,56 +311,28 @@ namespace signorini
         }
       else if (matrix_of_cell[cell] != CellMatrices::none)
         {
-          // x = C src (src itself if @p as_given), y = K x, dst += C^T y,
-          // C the constraints: a constrained dof is read from, and writes
-          // to, its line's dofs.
-          const unsigned int *dofs =
-            &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
-          for (unsigned int i = 0; i < n; ++i)
-            if (dofs[i] & constrained_flag)
-              {
-                const unsigned int line = dofs[i] & ~constrained_flag;
-                if (as_given)
-                  {
-                    x[i] = src.local_element(line_dof[line]);
-                    continue;
-                  }
-                double value = 0.;
-                for (unsigned int e = line_offsets[line];
-                     e < line_offsets[line + 1];
-                     ++e)
-                  value += line_entries[e].second *
-                           src.local_element(line_entries[e].first);
-                x[i] = value;
-              }
-            else
-              x[i] = src.local_element(dofs[i]);
+          gather(cell, x);
           cell_matrices.apply(matrix_of_cell[cell], x, y);
-          for (unsigned int i = 0; i < n; ++i)
-            if (dofs[i] & constrained_flag)
-              {
-                const unsigned int line = dofs[i] & ~constrained_flag;
-                for (unsigned int e = line_offsets[line];
-                     e < line_offsets[line + 1];
-                     ++e)
-                  dst.local_element(line_entries[e].first) +=
-                    line_entries[e].second * y[i];
-              }
-            else
-              dst.local_element(dofs[i]) += y[i];
+          scatter(cell, y);
         }
       else
         {
-          if (!phi)
-            phi = std::make_unique<CellEvaluation>(data);
-          phi->reinit(cell);
-          if (as_given)
-            phi->read_dof_values_plain(src);
-          else
-            phi->read_dof_values(src);
-          apply_cell(*phi);
-          phi->distribute_local_to_global(dst);
+          const unsigned int number = curved_of_cell[cell];
+          if (number / lanes != staged_batch)
+            {
+              flush();
+              staged_batch = number / lanes;
+              staged.fill(CellMatrices::none);
+              batch_x.fill(0.);
+            }
+          const unsigned int lane = number % lanes;
+          staged[lane]            = cell;
+          double x_cell[n];
+          gather(cell, x_cell);
+          for (unsigned int i = 0; i < n; ++i)
+            batch_x[i * lanes + lane] = x_cell[i];
         }
+    flush();
   }
 
   template <int dim>
@@ -442,7 +502,7 @@ namespace signorini
               partitioner->global_to_local(indices[k]);
           }
         direct[cell] = plain && matrix_of_cell[cell] != CellMatrices::none;
-        if (!plain && matrix_of_cell[cell] != CellMatrices::none)
+        if (!plain)
           {
             // A constrained dof's entry names its line (stored once, in
             // local indices) instead of its own index.
@@ -514,11 +574,10 @@ namespace signorini
     const unsigned int n        = n_cell_dofs;
     const unsigned int n_vertex = n / dim;
     const unsigned int n_cells  = direct.size();
-    // The resolved cells' n entries (not those of the cells without a
-    // shape matrix: they go through FEEvaluation), in order, in
-    // resolved_dofs; their first entry in cell_dofs says where.
+    // The resolved cells' n entries, in order, in resolved_dofs; their
+    // first entry in cell_dofs says where.
     const auto resolved_cell = [&](const unsigned int cell) {
-      return !direct[cell] && matrix_of_cell[cell] != CellMatrices::none;
+      return !direct[cell];
     };
     resolved_dofs.clear();
     for (unsigned int cell = 0; cell < n_cells; ++cell)

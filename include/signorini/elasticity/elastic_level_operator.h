@@ -11,6 +11,7 @@
 #include <deal.II/matrix_free/matrix_free.h>
 
 #include <signorini/elasticity/cell_matrices.h>
+#include <signorini/elasticity/curved_cells.h>
 #include <signorini/elasticity/material.h>
 
 #include <array>
@@ -189,7 +190,8 @@ namespace signorini
     apply(VectorType &dst, const VectorType &src) const;
 
     /** The cell's stiffness times its dof values (in place): its shape's
-     * matrix where it has one, else apply_at_quadrature_points(). */
+     * matrix where it has one, else apply_at_quadrature_points() (the
+     * coarse level's matrix, through FEEvaluation). */
     template <int degree>
     void
     apply_cell(Evaluation<degree> &phi) const;
@@ -208,7 +210,8 @@ namespace signorini
 
     using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
 
-    /** The matrices of the cells with an affine mapping, one per shape. */
+    /** The matrices of the cells with an affine mapping, one per shape;
+     * the others' geometry at their quadrature points (curved_cells). */
     template <int degree>
     void
     setup_cell_matrices();
@@ -229,10 +232,9 @@ namespace signorini
     evaluation_positions() const;
 
     /** dst += K src on @p cells: the `direct` cells by their matrix, the
-     * `resolved` ones by their matrix and constraint lines (unless
-     * @p as_given), the others through FEEvaluation, which reads @p src with
-     * the constraints resolved, or @p as_given; the shape matrices applied
-     * in CellNumber. */
+     * `resolved` ones by their matrix or as curved cells (a batch at a
+     * time) and by their constraint lines (unless @p as_given); the shape
+     * matrices applied in CellNumber, the curved cells in double. */
     template <int degree, bool as_given, typename CellNumber>
     void
     apply_cells(const dealii::MatrixFree<dim, double>       &data,
@@ -272,10 +274,14 @@ namespace signorini
     CellMatrices cell_matrices;
     /** The matrix of each cell, or CellMatrices::none. */
     std::vector<unsigned int> matrix_of_cell;
+    /** The cells without a matrix (curved), eight at a time; each cell's
+     * number among them, or CellMatrices::none. */
+    CurvedCells               curved_cells;
+    std::vector<unsigned int> curved_of_cell;
     /** Per cell, its dofs' local vector indices in FEEvaluation's order,
-     * for every cell with a shape matrix, which is read and written
-     * without FEEvaluation: `direct` if none of its dofs is constrained,
-     * else `resolved` (below). */
+     * for every cell, which is read and written without FEEvaluation:
+     * `direct` if it has a shape matrix and none of its dofs is
+     * constrained, else `resolved` (below). */
     std::vector<unsigned int> cell_dofs;
     std::vector<bool>         direct;
     /** Once compact_cell_dofs() ran (at setup), cell_dofs holds n / dim
@@ -283,13 +289,13 @@ namespace signorini
      * dim - 1 follow each), and in the first, a resolved cell's place in
      * resolved_dofs (in units of n), where its n entries are. */
     std::vector<unsigned int> resolved_dofs;
-    /** The cells with a shape matrix and constrained dofs (hanging nodes,
-     * Dirichlet dofs; `resolved`: not direct, with a matrix) are applied as
-     * C^T K C without FEEvaluation too: in their entries (cell_dofs, then
-     * resolved_dofs), a constrained dof is
-     * constrained_flag | the index of its line, whose (local index, weight)
-     * pairs are line_entries from line_offsets[line] to
-     * line_offsets[line + 1] (none for a Dirichlet dof). */
+    /** The curved cells, and the cells with a shape matrix and
+     * constrained dofs (hanging nodes, Dirichlet dofs; `resolved`: not
+     * direct) are applied as C^T K C without FEEvaluation too: in their entries
+     * (cell_dofs, then resolved_dofs), a constrained dof is constrained_flag |
+     * the index of its line, whose (local index, weight) pairs are line_entries
+     * from line_offsets[line] to line_offsets[line + 1] (none for a Dirichlet
+     * dof). */
     std::vector<unsigned int>                    line_offsets;
     std::vector<std::pair<unsigned int, double>> line_entries;
     static constexpr unsigned int                constrained_flag = 1u << 31;

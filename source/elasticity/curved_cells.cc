@@ -1,0 +1,246 @@
+#include <deal.II/base/polynomial.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <signorini/elasticity/curved_cells.h>
+
+#include "wide_kernel.h"
+
+#include <algorithm>
+
+namespace signorini
+{
+  namespace curved_kernels
+  {
+    using Lanes =
+      double __attribute__((vector_size(CurvedCells::lanes * sizeof(double))));
+
+    /** out = M_dir in: the 1D matrix M (N x N, [q][i]) along direction
+     * @p dir of an N^dim tensor, or its transpose. */
+    template <int dim, int N, bool transpose, typename In = Lanes>
+    inline __attribute__((always_inline)) void
+    contract(const double *M, const int dir, const In *in, Lanes *out)
+    {
+      constexpr int size   = dim == 2 ? N * N : N * N * N;
+      const int     stride = dir == 0 ? 1 : dir == 1 ? N : N * N;
+      for (int base = 0; base < size; ++base)
+        {
+          // base with digit dir zero: one line along dir.
+          if ((base / stride) % N != 0)
+            continue;
+          Lanes line[N];
+          for (int i = 0; i < N; ++i)
+            line[i] = in[base + i * stride];
+          for (int q = 0; q < N; ++q)
+            {
+              Lanes sum = {};
+              for (int i = 0; i < N; ++i)
+                sum += (transpose ? M[i * N + q] : M[q * N + i]) * line[i];
+              out[base + q * stride] = sum;
+            }
+        }
+    }
+
+    /** y = K x of a batch (see CurvedCells). */
+    template <int dim, int N>
+    inline __attribute__((always_inline)) void
+    apply_batch(const double *S,
+                const double *D,
+                const Lanes *B,
+                const double  mu,
+                const double  lambda,
+                const Lanes *x,
+                Lanes       *y)
+    {
+      constexpr int nq = dim == 2 ? N * N : N * N * N;
+      // The reference gradients G[c][k][q].
+      Lanes G[dim][dim][nq], a[nq], b[nq];
+      for (int c = 0; c < dim; ++c)
+        for (int k = 0; k < dim; ++k)
+          {
+            const Lanes *from = x + c * nq;
+            Lanes        *to   = dim == 2 ? G[c][k] : a;
+            contract<dim, N, false, Lanes>(k == 0 ? D : S, 0, from, to);
+            if (dim == 2)
+              {
+                contract<dim, N, false>(k == 1 ? D : S, 1, G[c][k], b);
+                std::copy(b, b + nq, G[c][k]);
+              }
+            else
+              {
+                contract<dim, N, false>(k == 1 ? D : S, 1, a, b);
+                contract<dim, N, false>(k == 2 ? D : S, 2, b, G[c][k]);
+              }
+          }
+      // At each point: H = G B, sigma(H), T = sigma B^T, into G.
+      for (int q = 0; q < nq; ++q)
+        {
+          const Lanes *Bq = B + q * dim * dim;
+          Lanes        H[dim][dim];
+          for (int c = 0; c < dim; ++c)
+            for (int j = 0; j < dim; ++j)
+              {
+                Lanes sum = G[c][0][q] * Bq[j];
+                for (int k = 1; k < dim; ++k)
+                  sum += G[c][k][q] * Bq[k * dim + j];
+                H[c][j] = sum;
+              }
+          Lanes trace = H[0][0];
+          for (int d = 1; d < dim; ++d)
+            trace += H[d][d];
+          Lanes sigma[dim][dim];
+          for (int c = 0; c < dim; ++c)
+            for (int j = 0; j < dim; ++j)
+              sigma[c][j] = mu * (H[c][j] + H[j][c]);
+          for (int d = 0; d < dim; ++d)
+            sigma[d][d] += lambda * trace;
+          for (int c = 0; c < dim; ++c)
+            for (int k = 0; k < dim; ++k)
+              {
+                Lanes sum = sigma[c][0] * Bq[k * dim];
+                for (int j = 1; j < dim; ++j)
+                  sum += sigma[c][j] * Bq[k * dim + j];
+                G[c][k][q] = sum;
+              }
+        }
+      // y_c = sum_k (the transposed contractions of T[c][k]).
+      for (int c = 0; c < dim; ++c)
+        {
+          Lanes *out = y + c * nq;
+          for (int i = 0; i < nq; ++i)
+            out[i] = Lanes{};
+          for (int k = 0; k < dim; ++k)
+            {
+              if (dim == 2)
+                {
+                  contract<dim, N, true>(k == 1 ? D : S, 1, G[c][k], a);
+                  contract<dim, N, true>(k == 0 ? D : S, 0, a, b);
+                }
+              else
+                {
+                  contract<dim, N, true>(k == 2 ? D : S, 2, G[c][k], a);
+                  contract<dim, N, true>(k == 1 ? D : S, 1, a, b);
+                  contract<dim, N, true>(k == 0 ? D : S, 0, b, a);
+                  std::copy(a, a + nq, b);
+                }
+              for (int i = 0; i < nq; ++i)
+                out[i] += b[i];
+            }
+        }
+    }
+
+    // One plain function per case, which target_clones copies per
+    // instruction set.
+#define SIGNORINI_CURVED_KERNEL(name, dim, N)                                 \
+  SIGNORINI_WIDE_KERNEL void name(const double *S,                            \
+                                  const double *D,                            \
+                                  const Lanes *B,                            \
+                                  const double  mu,                           \
+                                  const double  lambda,                       \
+                                  const Lanes *x,                            \
+                                  Lanes       *y)                            \
+  {                                                                           \
+    apply_batch<dim, N>(S, D, B, mu, lambda, x, y);                           \
+  }
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals, 2, 2)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2, 2, 3)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra, 3, 2)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2, 3, 3)
+#undef SIGNORINI_CURVED_KERNEL
+  } // namespace curved_kernels
+
+  void
+  CurvedCells::reinit(const unsigned int dim,
+                      const unsigned int degree,
+                      const double       mu,
+                      const double       lambda)
+  {
+    this->dim    = dim;
+    this->degree = degree;
+    this->mu     = mu;
+    this->lambda = lambda;
+    n            = 0;
+    geometry.clear();
+    // The 1D basis at the nodes 0, ..., 1 (lexicographic), at the Gauss
+    // points of degree + 1.
+    const unsigned int             N = degree + 1;
+    std::vector<dealii::Point<1>>  nodes(N);
+    for (unsigned int i = 0; i < N; ++i)
+      nodes[i][0] = double(i) / degree;
+    const auto basis =
+      dealii::Polynomials::generate_complete_Lagrange_basis(nodes);
+    const dealii::QGauss<1> gauss(N);
+    values.resize(N * N);
+    derivatives.resize(N * N);
+    std::vector<double> value_and_derivative(2);
+    for (unsigned int q = 0; q < N; ++q)
+      for (unsigned int i = 0; i < N; ++i)
+        {
+          basis[i].value(gauss.point(q)[0], value_and_derivative);
+          values[q * N + i]      = value_and_derivative[0];
+          derivatives[q * N + i] = value_and_derivative[1];
+        }
+  }
+
+  void
+  CurvedCells::clear()
+  {
+    n = 0;
+    geometry.clear();
+  }
+
+  unsigned int
+  CurvedCells::add(const std::vector<double> &B)
+  {
+    const unsigned int per_batch = B.size() * lanes;
+    if (n % lanes == 0)
+      geometry.resize(geometry.size() + per_batch, 0.);
+    double *batch = geometry.data() + (n / lanes) * per_batch;
+    for (std::size_t e = 0; e < B.size(); ++e)
+      batch[e * lanes + n % lanes] = B[e];
+    return n++;
+  }
+
+  unsigned int
+  CurvedCells::n_cells() const
+  {
+    return n;
+  }
+
+  unsigned int
+  CurvedCells::n_cell_dofs() const
+  {
+    unsigned int nodes = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      nodes *= degree + 1;
+    return dim * nodes;
+  }
+
+  void
+  CurvedCells::apply(const unsigned int batch,
+                     const double      *x,
+                     double            *y) const
+  {
+    unsigned int n_q = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_q *= degree + 1;
+    const auto *B = reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
+                    std::size_t(batch) * n_q * dim * dim;
+    const auto *in  = reinterpret_cast<const curved_kernels::Lanes *>(x);
+    auto       *out = reinterpret_cast<curved_kernels::Lanes *>(y);
+    const double *S = values.data(), *D = derivatives.data();
+    if (dim == 2)
+      (degree == 1 ? curved_kernels::apply_quadrilaterals :
+                     curved_kernels::apply_quadrilaterals_q2)(
+        S, D, B, mu, lambda, in, out);
+    else
+      (degree == 1 ? curved_kernels::apply_hexahedra :
+                     curved_kernels::apply_hexahedra_q2)(
+        S, D, B, mu, lambda, in, out);
+  }
+
+  std::size_t
+  CurvedCells::memory_consumption() const
+  {
+    return geometry.memory_consumption();
+  }
+} // namespace signorini
