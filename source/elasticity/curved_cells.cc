@@ -4,7 +4,6 @@
 #include <signorini/elasticity/curved_cells.h>
 
 #include "wide_kernel.h"
-
 #include <algorithm>
 
 namespace signorini
@@ -45,11 +44,11 @@ namespace signorini
     inline __attribute__((always_inline)) void
     apply_batch(const double *S,
                 const double *D,
-                const Lanes *B,
+                const Lanes  *B,
                 const double  mu,
                 const double  lambda,
-                const Lanes *x,
-                Lanes       *y)
+                const Lanes  *x,
+                Lanes        *y)
     {
       constexpr int nq = dim == 2 ? N * N : N * N * N;
       // The reference gradients G[c][k][q].
@@ -58,7 +57,7 @@ namespace signorini
         for (int k = 0; k < dim; ++k)
           {
             const Lanes *from = x + c * nq;
-            Lanes        *to   = dim == 2 ? G[c][k] : a;
+            Lanes       *to   = dim == 2 ? G[c][k] : a;
             contract<dim, N, false, Lanes>(k == 0 ? D : S, 0, from, to);
             if (dim == 2)
               {
@@ -130,16 +129,16 @@ namespace signorini
 
     // One plain function per case, which target_clones copies per
     // instruction set.
-#define SIGNORINI_CURVED_KERNEL(name, dim, N)                                 \
-  SIGNORINI_WIDE_KERNEL void name(const double *S,                            \
-                                  const double *D,                            \
-                                  const Lanes *B,                            \
-                                  const double  mu,                           \
-                                  const double  lambda,                       \
-                                  const Lanes *x,                            \
-                                  Lanes       *y)                            \
-  {                                                                           \
-    apply_batch<dim, N>(S, D, B, mu, lambda, x, y);                           \
+#define SIGNORINI_CURVED_KERNEL(name, dim, N)           \
+  SIGNORINI_WIDE_KERNEL void name(const double *S,      \
+                                  const double *D,      \
+                                  const Lanes  *B,      \
+                                  const double  mu,     \
+                                  const double  lambda, \
+                                  const Lanes  *x,      \
+                                  Lanes        *y)      \
+  {                                                     \
+    apply_batch<dim, N>(S, D, B, mu, lambda, x, y);     \
   }
     SIGNORINI_CURVED_KERNEL(apply_quadrilaterals, 2, 2)
     SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2, 2, 3)
@@ -162,8 +161,8 @@ namespace signorini
     geometry.clear();
     // The 1D basis at the nodes 0, ..., 1 (lexicographic), at the Gauss
     // points of degree + 1.
-    const unsigned int             N = degree + 1;
-    std::vector<dealii::Point<1>>  nodes(N);
+    const unsigned int            N = degree + 1;
+    std::vector<dealii::Point<1>> nodes(N);
     for (unsigned int i = 0; i < N; ++i)
       nodes[i][0] = double(i) / degree;
     const auto basis =
@@ -216,26 +215,25 @@ namespace signorini
   }
 
   void
-  CurvedCells::apply(const unsigned int batch,
-                     const double      *x,
-                     double            *y) const
+  CurvedCells::apply(const unsigned int batch, const double *x, double *y) const
   {
     unsigned int n_q = 1;
     for (unsigned int d = 0; d < dim; ++d)
       n_q *= degree + 1;
-    const auto *B = reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
-                    std::size_t(batch) * n_q * dim * dim;
-    const auto *in  = reinterpret_cast<const curved_kernels::Lanes *>(x);
-    auto       *out = reinterpret_cast<curved_kernels::Lanes *>(y);
+    const auto *B =
+      reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
+      std::size_t(batch) * n_q * dim * dim;
+    const auto   *in  = reinterpret_cast<const curved_kernels::Lanes *>(x);
+    auto         *out = reinterpret_cast<curved_kernels::Lanes *>(y);
     const double *S = values.data(), *D = derivatives.data();
     if (dim == 2)
-      (degree == 1 ? curved_kernels::apply_quadrilaterals :
-                     curved_kernels::apply_quadrilaterals_q2)(
-        S, D, B, mu, lambda, in, out);
+      (degree == 1 ?
+         curved_kernels::apply_quadrilaterals :
+         curved_kernels::apply_quadrilaterals_q2)(S, D, B, mu, lambda, in, out);
     else
-      (degree == 1 ? curved_kernels::apply_hexahedra :
-                     curved_kernels::apply_hexahedra_q2)(
-        S, D, B, mu, lambda, in, out);
+      (degree == 1 ?
+         curved_kernels::apply_hexahedra :
+         curved_kernels::apply_hexahedra_q2)(S, D, B, mu, lambda, in, out);
   }
 
   std::size_t

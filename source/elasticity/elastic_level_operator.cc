@@ -472,6 +472,11 @@ namespace signorini
     std::unique_ptr<CellEvaluation>                           phi;
     std::vector<double>                                       columns(n * n);
     std::vector<types::global_dof_index>                      indices(n);
+    constexpr unsigned int lanes         = CurvedCells::lanes;
+    unsigned int           columns_batch = CellMatrices::none;
+    AlignedVector<double>  unit(n * lanes), image(n * lanes);
+    std::vector<double>    batch_columns(
+      curved_cells.n_cells() > 0 ? lanes * n * n : 0);
     std::vector<std::pair<types::global_dof_index,
                           std::vector<std::pair<unsigned int, double>>>>
       depends;
@@ -484,6 +489,30 @@ namespace signorini
           {
             K      = cell_matrices.matrix(matrix_of_cell[cell]);
             stride = cell_matrices.column_stride();
+          }
+        else if (curved_of_cell[cell] != CellMatrices::none)
+          {
+            // The columns of a batch of curved cells at once: K e_j in
+            // every lane.
+            const unsigned int number = curved_of_cell[cell];
+            if (number / lanes != columns_batch)
+              {
+                columns_batch = number / lanes;
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    unit.fill(0.);
+                    for (unsigned int l = 0; l < lanes; ++l)
+                      unit[j * lanes + l] = 1.;
+                    curved_cells.apply(columns_batch,
+                                       unit.data(),
+                                       image.data());
+                    for (unsigned int l = 0; l < lanes; ++l)
+                      for (unsigned int i = 0; i < n; ++i)
+                        batch_columns[(l * n + j) * n + i] =
+                          image[i * lanes + l];
+                  }
+              }
+            K = &batch_columns[(number % lanes) * n * n];
           }
         else
           {

@@ -39,9 +39,12 @@ namespace signorini
     // The internal force K u of a cell by its shape's stiffness matrix
     // where cells share shapes (boxes, straight-sided adaptive meshes:
     // computed once per shape), else at the quadrature points (curved
-    // cells, which rarely repeat). At 1.49M dofs in 3D the quadrature
-    // points took 1.8 s of a 32 s run on one process.
-    CellStiffness<dim> stiffness(material);
+    // cells, which rarely repeat, and whose vertices do not tell their
+    // shape: two cells of one vertex shape may curve apart). At 1.49M dofs
+    // in 3D the quadrature points took 1.8 s of a 32 s run on one process.
+    CellStiffness<dim> stiffness(material, [&discretisation](const auto &cell) {
+      return discretisation.curved(cell);
+    });
 
     Tensor<1, dim> applied, reaction;
     double         energy = 0.;

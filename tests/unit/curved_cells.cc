@@ -37,18 +37,18 @@ namespace
     Triangulation<dim> mesh;
     GridGenerator::hyper_ball(mesh);
     mesh.refine_global(1);
-    const MappingQ<dim>      mapping(degree);
-    const FESystem<dim>      fe(FE_Q<dim>(degree), dim);
-    const QGauss<dim>        gauss(degree + 1);
-    const unsigned int       n = fe.n_dofs_per_cell(), nodes = n / dim;
-    const auto               lexicographic =
+    const MappingQ<dim> mapping(degree);
+    const FESystem<dim> fe(FE_Q<dim>(degree), dim);
+    const QGauss<dim>   gauss(degree + 1);
+    const unsigned int  n = fe.n_dofs_per_cell(), nodes = n / dim;
+    const auto          lexicographic =
       FETools::lexicographic_to_hierarchic_numbering<dim>(degree);
-    FEValues<dim>            fe_values(mapping,
+    FEValues<dim> fe_values(mapping,
                             fe,
                             gauss,
                             update_gradients | update_JxW_values |
                               update_inverse_jacobians);
-    CurvedCells              curved;
+    CurvedCells   curved;
     curved.reinit(dim, degree, mu, lambda);
     std::vector<std::vector<double>> matrices, xs;
     for (const auto &cell : mesh.active_cell_iterators())
@@ -60,16 +60,15 @@ namespace
         for (unsigned int q = 0; q < gauss.size(); ++q)
           for (unsigned int k = 0; k < dim; ++k)
             for (unsigned int j = 0; j < dim; ++j)
-              B[(q * dim + k) * dim + j] =
-                std::sqrt(fe_values.JxW(q)) *
-                fe_values.inverse_jacobian(q)[k][j];
+              B[(q * dim + k) * dim + j] = std::sqrt(fe_values.JxW(q)) *
+                                           fe_values.inverse_jacobian(q)[k][j];
         curved.add(B);
         std::vector<unsigned int> local(n);
         for (unsigned int c = 0; c < dim; ++c)
           for (unsigned int i = 0; i < nodes; ++i)
             local[c * nodes + i] =
               fe.component_to_system_index(c, lexicographic[i]);
-        std::vector<double> K(n * n, 0.);
+        std::vector<double>              K(n * n, 0.);
         const FEValuesExtractors::Vector u(0);
         for (unsigned int q = 0; q < gauss.size(); ++q)
           for (unsigned int a = 0; a < n; ++a)
@@ -77,9 +76,9 @@ namespace
               {
                 const auto ea = fe_values[u].symmetric_gradient(local[a], q);
                 const auto eb = fe_values[u].symmetric_gradient(local[b], q);
-                K[a * n + b] += (2. * mu * (ea * eb) +
-                                 lambda * trace(ea) * trace(eb)) *
-                                fe_values.JxW(q);
+                K[a * n + b] +=
+                  (2. * mu * (ea * eb) + lambda * trace(ea) * trace(eb)) *
+                  fe_values.JxW(q);
               }
         matrices.push_back(K);
         std::vector<double> x(n);
