@@ -11,53 +11,34 @@
 # Lagrange tetrahedra of order 2, holds pi/6 to 1 %, where its P1 cells
 # hold less.
 source "$TESTS/common.bash"
-for degree in 1 2; do
+# one NAME SCENE [GEOMETRY LINES...]: one cycle of prm/SCENE.prm with the
+# Geometry entries given, written to NAME/.
+one() {
+  local name=$1 scene=$2
+  shift 2
   {
-    echo "include $PRM/hertz_sphere.prm"
+    echo "include $PRM/$scene.prm"
     echo "subsection Geometry"
-    echo "  set Initial refinement = 1"
-    echo "  set Element degree     = $degree"
+    for line in "$@"; do echo "  set $line"; done
     echo "end"
     echo "subsection Mesh refinement"
     echo "  set Number of cycles = 1"
     echo "end"
     echo "subsection Output"
-    echo "  set Directory = ball$degree"
+    echo "  set Directory = $name"
     echo "end"
-  } > ball$degree.prm
-  run "$SIGNORINI" ball$degree.prm
+  } > $name.prm
+  run "$SIGNORINI" $name.prm
+}
+for degree in 1 2; do
+  one ball$degree hertz_sphere "Initial refinement = 1" \
+    "Element degree = $degree"
 done
-{
-  echo "include $PRM/hertz_cylinder.prm"
-  echo "subsection Geometry"
-  echo "  set Initial refinement = 1"
-  echo "  set Element degree     = 2"
-  echo "end"
-  echo "subsection Mesh refinement"
-  echo "  set Number of cycles = 1"
-  echo "end"
-  echo "subsection Output"
-  echo "  set Directory = disk2"
-  echo "end"
-} > disk2.prm
-run "$SIGNORINI" disk2.prm
+one disk2 hertz_cylinder "Initial refinement = 1" "Element degree = 2"
 for degree in 1 2; do
-  {
-    echo "include $PRM/hertz_sphere.prm"
-    echo "subsection Geometry"
-    echo "  set Type               = gmsh"
-    echo "  set Mesh file          = $PRM/quarter_ball.geo"
-    echo "  set Initial refinement = 0"
-    echo "  set Element degree     = $degree"
-    echo "end"
-    echo "subsection Mesh refinement"
-    echo "  set Number of cycles = 1"
-    echo "end"
-    echo "subsection Output"
-    echo "  set Directory = tetrahedra$degree"
-    echo "end"
-  } > tetrahedra$degree.prm
-  run "$SIGNORINI" tetrahedra$degree.prm
+  one tetrahedra$degree hertz_sphere "Type = gmsh" \
+    "Mesh file = $PRM/quarter_ball.geo" "Initial refinement = 0" \
+    "Element degree = $degree"
 done
 /usr/bin/python3 - <<'PYTHON' 2>&1
 import math

@@ -99,16 +99,14 @@ namespace
              cell->line(b - cell->n_vertices())->center();
   }
 
-  /** The ghosted P1 or P2 vector of @p field's node values. */
-  template <int dim>
-  VectorType
-  vertex_values(const DoFHandler<dim> &dof_handler, const Field &field)
+  /** @p f(cell, node b, component d, dof i) for each locally owned dof i
+   * of @p dof_handler's locally owned cells (once per cell it is in). */
+  template <int dim, typename F>
+  void
+  for_each_owned_node(const DoFHandler<dim> &dof_handler, const F &f)
   {
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     const IndexSet &owned = dof_handler.locally_owned_dofs();
     const auto     &fe    = dof_handler.get_fe();
-    VectorType      values(owned, MPI_COMM_WORLD);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -120,9 +118,27 @@ namespace
               {
                 const auto i = dofs[fe.component_to_system_index(d, b)];
                 if (owned.is_element(i))
-                  values(i) = field(to_3d(node(cell, b)), d);
+                  f(cell, b, d, i);
               }
         }
+  }
+
+  /** The ghosted P1 or P2 vector of @p field's node values. */
+  template <int dim>
+  VectorType
+  vertex_values(const DoFHandler<dim> &dof_handler, const Field &field)
+  {
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    VectorType      values(owned, MPI_COMM_WORLD);
+    for_each_owned_node(dof_handler,
+                        [&](const auto        &cell,
+                            const unsigned int b,
+                            const unsigned int d,
+                            const auto         i) {
+                          values(i) = field(to_3d(node(cell, b)), d);
+                        });
     values.compress(VectorOperation::insert);
     VectorType ghosted(owned, relevant, MPI_COMM_WORLD);
     ghosted = values;
@@ -166,29 +182,22 @@ namespace
     new_dofs.distribute_dofs(fe);
     const auto result = transfer.interpolate(new_dofs);
 
-    const IndexSet                      &owned = new_dofs.locally_owned_dofs();
-    std::vector<double>                  difference(fields.size(), 0.);
-    std::vector<bool>                    seen(new_dofs.n_dofs(), false);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : new_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int b = 0; b < fe.base_element(0).n_dofs_per_cell();
-               ++b)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const auto i = dofs[fe.component_to_system_index(d, b)];
-                if (!owned.is_element(i) || seen[i])
-                  continue;
-                seen[i] = true;
-                for (unsigned int k = 0; k < fields.size(); ++k)
-                  difference[k] =
-                    std::max(difference[k],
-                             std::abs(result[k](i) -
-                                      expected(node(cell, b), d, k)));
-              }
-        }
+    std::vector<double> difference(fields.size(), 0.);
+    std::vector<bool>   seen(new_dofs.n_dofs(), false);
+    for_each_owned_node(new_dofs,
+                        [&](const auto        &cell,
+                            const unsigned int b,
+                            const unsigned int d,
+                            const auto         i) {
+                          if (seen[i])
+                            return;
+                          seen[i] = true;
+                          for (unsigned int k = 0; k < fields.size(); ++k)
+                            difference[k] =
+                              std::max(difference[k],
+                                       std::abs(result[k](i) -
+                                                expected(node(cell, b), d, k)));
+                        });
     unsigned int compared = 0;
     for (const bool s : seen)
       compared += s;
