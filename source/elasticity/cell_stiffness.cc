@@ -150,6 +150,7 @@ namespace signorini
   CellStiffness<dim>::clear()
   {
     cache.clear();
+    seen.clear();
     lookups = 0;
   }
 
@@ -249,6 +250,17 @@ namespace signorini
     FEValues<dim>                                        &fe_values,
     double                                               &factor)
   {
+    return find_or_store(cell, fe_values, factor, false);
+  }
+
+  template <int dim>
+  const FullMatrix<double> *
+  CellStiffness<dim>::find_or_store(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    FEValues<dim>                                        &fe_values,
+    double                                               &factor,
+    const bool                                            at_first_sight)
+  {
     if (curved && curved(cell))
       return nullptr;
     double      scale;
@@ -261,6 +273,12 @@ namespace signorini
     if (found != cache.end())
       return &found->second;
     if (cache.size() >= max_shapes || cache.size() * 2 > lookups + 64)
+      return nullptr;
+    // For shared(), a shape is stored at its second sighting: a matrix of
+    // a shape seen once costs its cell's evaluation n times over (a
+    // distorted mesh's every cell: 1.2 s of the Q2 Hertz ball's statistics
+    // at 265k dofs). matrix() needs the matrix anyway.
+    if (seen.insert(shape).second && !at_first_sight)
       return nullptr;
     // Stored for the unit scale: K(s x) = s^(dim-2) K(x) (s K(x) in an
     // axisymmetric model).
@@ -279,7 +297,7 @@ namespace signorini
     FEValues<dim>                                        &fe_values)
   {
     double factor;
-    if (const auto *unit = shared(cell, fe_values, factor))
+    if (const auto *unit = find_or_store(cell, fe_values, factor, true))
       {
         if (!scales_linearly)
           return *unit;

@@ -12,6 +12,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <set>
 
 namespace signorini
 {
@@ -56,9 +57,10 @@ namespace signorini
            dealii::FEValues<dim> &fe_values);
 
     /** The stiffness matrix of @p cell over @p factor (K = factor times
-     * it) if its shape is cached, or computed and cached now (@p fe_values
-     * reinit'ed on @p cell); null, with @p fe_values untouched, once the
-     * cache stores no more shapes (curved meshes, whose cells rarely
+     * it) if its shape is cached, or computed and cached now if it was seen
+     * before (@p fe_values reinit'ed on @p cell); null, with @p fe_values
+     * untouched, at a shape's first sighting and once the cache stores no
+     * more shapes (curved meshes, whose cells rarely
      * repeat: the caller may evaluate the cell more cheaply than its
      * whole matrix). Valid until the cache is cleared. */
     const dealii::FullMatrix<double> *
@@ -96,8 +98,19 @@ namespace signorini
      * one's (3D, axisymmetric), or the same (2D plane states). */
     const bool                                  scales_linearly;
     std::map<Shape, dealii::FullMatrix<double>> cache;
-    unsigned int                                lookups = 0;
-    dealii::FullMatrix<double>                  scaled;
+    /** shared(), or for matrix() (@p at_first_sight) storing a shape the
+     * first time it is seen. */
+    const dealii::FullMatrix<double> *
+    find_or_store(
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      dealii::FEValues<dim>                                        &fe_values,
+      double                                                       &factor,
+      const bool at_first_sight);
+
+    /** The shapes seen once, not yet stored. */
+    std::set<Shape>            seen;
+    unsigned int               lookups = 0;
+    dealii::FullMatrix<double> scaled;
   };
   /** What FEValues must compute for CellStiffness::compute() and
    * cell_internal_force(): gradients and JxW values, and the shape values
