@@ -205,15 +205,6 @@ namespace signorini
     return n;
   }
 
-  unsigned int
-  CurvedCells::n_cell_dofs() const
-  {
-    unsigned int nodes = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      nodes *= degree + 1;
-    return dim * nodes;
-  }
-
   void
   CurvedCells::apply(const unsigned int batch, const double *x, double *y) const
   {
@@ -236,9 +227,4 @@ namespace signorini
          curved_kernels::apply_hexahedra_q2)(S, D, B, mu, lambda, in, out);
   }
 
-  std::size_t
-  CurvedCells::memory_consumption() const
-  {
-    return geometry.memory_consumption();
-  }
 } // namespace signorini

@@ -225,7 +225,6 @@ namespace signorini
   template <int degree, bool as_given, typename CellNumber>
   void
   ElasticLevelOperator<dim>::apply_cells(
-    const MatrixFree<dim, double> &,
     VectorType                                  &dst,
     const VectorType                            &src,
     const std::pair<unsigned int, unsigned int> &cells) const
@@ -349,7 +348,7 @@ namespace signorini
     dst = 0.;
     with_degree([&](const auto degree) {
       apply_cells<decltype(degree)::value, as_given, CellNumber>(
-        matrix_free, dst, src, {0, matrix_of_cell.size()});
+        dst, src, {0, matrix_of_cell.size()});
     });
     dst.compress(VectorOperation::add);
     if (!had_ghosts)
@@ -469,8 +468,6 @@ namespace signorini
     line_entries.clear();
     line_dof.clear();
     std::unordered_map<types::global_dof_index, unsigned int> line_of;
-    std::unique_ptr<CellEvaluation>                           phi;
-    std::vector<double>                                       columns(n * n);
     std::vector<types::global_dof_index>                      indices(n);
     constexpr unsigned int lanes         = CurvedCells::lanes;
     unsigned int           columns_batch = CellMatrices::none;
@@ -490,10 +487,11 @@ namespace signorini
             K      = cell_matrices.matrix(matrix_of_cell[cell]);
             stride = cell_matrices.column_stride();
           }
-        else if (curved_of_cell[cell] != CellMatrices::none)
+        else
           {
-            // The columns of a batch of curved cells at once: K e_j in
-            // every lane.
+            // A curved cell (setup_cell_matrices() gave every cell without
+            // a matrix to curved_cells): the columns of its batch at once,
+            // K e_j in every lane.
             const unsigned int number = curved_of_cell[cell];
             if (number / lanes != columns_batch)
               {
@@ -513,14 +511,6 @@ namespace signorini
                   }
               }
             K = &batch_columns[(number % lanes) * n * n];
-          }
-        else
-          {
-            if (!phi)
-              phi = std::make_unique<CellEvaluation>(matrix_free);
-            phi->reinit(cell);
-            quadrature_matrix(*phi, columns);
-            K = columns.data();
           }
         cells[cell]->get_dof_indices(indices);
         bool plain = true;

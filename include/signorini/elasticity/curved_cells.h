@@ -51,20 +51,11 @@ namespace signorini
     unsigned int
     n_cells() const;
 
-    /** The dofs of a cell (dim components of (degree + 1)^dim nodes, by
-     * component, the nodes lexicographic, as deal.II's FEEvaluation). */
-    unsigned int
-    n_cell_dofs() const;
-
     /** y = K x for the cells of @p batch, x and y by dof, then lane
      * (x[i * lanes + l]), both aligned to 64 bytes (AlignedVector's); a
      * lane without a cell has no entries that matter. */
     void
     apply(const unsigned int batch, const double *x, double *y) const;
-
-    /** The bytes of the cells' geometry. */
-    std::size_t
-    memory_consumption() const;
 
   private:
     unsigned int dim    = 0;

@@ -237,8 +237,7 @@ namespace signorini
      * matrices applied in CellNumber, the curved cells in double. */
     template <int degree, bool as_given, typename CellNumber>
     void
-    apply_cells(const dealii::MatrixFree<dim, double>       &data,
-                VectorType                                  &dst,
+    apply_cells(VectorType                                  &dst,
                 const VectorType                            &src,
                 const std::pair<unsigned int, unsigned int> &cells) const;
 
