@@ -127,6 +127,105 @@ namespace signorini
         }
     }
 
+    /** The scaled physical gradients h[A][q][j] = sum_k G[A][q][k] B_q[k][j]
+     * of each node A at each point q, G the reference gradients. */
+    template <int dim, int N>
+    inline __attribute__((always_inline)) void
+    node_gradients(const double *G, const Lanes *B, Lanes *h)
+    {
+      constexpr int nq = dim == 2 ? N * N : N * N * N;
+      for (int A = 0; A < nq; ++A)
+        for (int q = 0; q < nq; ++q)
+          {
+            const double *GAq = G + (A * nq + q) * dim;
+            const Lanes  *Bq  = B + q * dim * dim;
+            for (int j = 0; j < dim; ++j)
+              {
+                Lanes sum = GAq[0] * Bq[j];
+                for (int k = 1; k < dim; ++k)
+                  sum += GAq[k] * Bq[k * dim + j];
+                h[(A * nq + q) * dim + j] = sum;
+              }
+          }
+    }
+
+    /** The diagonal of a batch's K: entry (c, A) is sum_q mu (|h_A|^2 +
+     * h_A[c]^2) + lambda h_A[c]^2, h_A = G_A B_q (in registers). */
+    template <int dim, int N>
+    inline __attribute__((always_inline)) void
+    diagonal_batch(const double *G,
+                   const Lanes  *B,
+                   const double  mu,
+                   const double  lambda,
+                   Lanes *,
+                   Lanes *diagonal)
+    {
+      constexpr int nq = dim == 2 ? N * N : N * N * N;
+      for (int A = 0; A < nq; ++A)
+        {
+          Lanes square[dim] = {};
+          for (int q = 0; q < nq; ++q)
+            {
+              const double *GAq = G + (A * nq + q) * dim;
+              const Lanes  *Bq  = B + q * dim * dim;
+              for (int j = 0; j < dim; ++j)
+                {
+                  Lanes value = GAq[0] * Bq[j];
+                  for (int k = 1; k < dim; ++k)
+                    value += GAq[k] * Bq[k * dim + j];
+                  square[j] += value * value;
+                }
+            }
+          Lanes norm = square[0];
+          for (int j = 1; j < dim; ++j)
+            norm += square[j];
+          for (int c = 0; c < dim; ++c)
+            diagonal[c * nq + A] = mu * norm + (mu + lambda) * square[c];
+        }
+    }
+
+    /** A batch's K by blocks: entry ((c, A), (e, B)) is sum_q mu delta_ce
+     * h_A . h_B + mu h_A[e] h_B[c] + lambda h_A[c] h_B[e], from
+     * M = sum_q h_A h_B^T; K[(c * nq + A) * n + e * nq + B]. */
+    template <int dim, int N>
+    inline __attribute__((always_inline)) void
+    matrix_batch(const double *G,
+                 const Lanes  *B,
+                 const double  mu,
+                 const double  lambda,
+                 Lanes        *h,
+                 Lanes        *K)
+    {
+      constexpr int nq = dim == 2 ? N * N : N * N * N;
+      constexpr int n  = dim * nq;
+      node_gradients<dim, N>(G, B, h);
+      for (int A = 0; A < nq; ++A)
+        for (int Bn = A; Bn < nq; ++Bn)
+          {
+            Lanes M[dim][dim] = {};
+            for (int q = 0; q < nq; ++q)
+              {
+                const Lanes *hA = h + (A * nq + q) * dim;
+                const Lanes *hB = h + (Bn * nq + q) * dim;
+                for (int i = 0; i < dim; ++i)
+                  for (int j = 0; j < dim; ++j)
+                    M[i][j] += hA[i] * hB[j];
+              }
+            Lanes trace = M[0][0];
+            for (int d = 1; d < dim; ++d)
+              trace += M[d][d];
+            for (int c = 0; c < dim; ++c)
+              for (int e = 0; e < dim; ++e)
+                {
+                  Lanes entry = mu * M[e][c] + lambda * M[c][e];
+                  if (c == e)
+                    entry += mu * trace;
+                  K[(c * nq + A) * n + e * nq + Bn] = entry;
+                  K[(e * nq + Bn) * n + c * nq + A] = entry;
+                }
+          }
+    }
+
     // One plain function per case, which target_clones copies per
     // instruction set.
 #define SIGNORINI_CURVED_KERNEL(name, dim, N)           \
@@ -145,6 +244,25 @@ namespace signorini
     SIGNORINI_CURVED_KERNEL(apply_hexahedra, 3, 2)
     SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2, 3, 3)
 #undef SIGNORINI_CURVED_KERNEL
+#define SIGNORINI_CURVED_SETUP(name, batch_function, dim, N) \
+  SIGNORINI_WIDE_KERNEL void name(const double *G,           \
+                                  const Lanes  *B,           \
+                                  const double  mu,          \
+                                  const double  lambda,      \
+                                  Lanes        *h,           \
+                                  Lanes        *out)         \
+  {                                                          \
+    batch_function<dim, N>(G, B, mu, lambda, h, out);        \
+  }
+    SIGNORINI_CURVED_SETUP(diagonal_2d_q1, diagonal_batch, 2, 2)
+    SIGNORINI_CURVED_SETUP(diagonal_2d_q2, diagonal_batch, 2, 3)
+    SIGNORINI_CURVED_SETUP(diagonal_3d_q1, diagonal_batch, 3, 2)
+    SIGNORINI_CURVED_SETUP(diagonal_3d_q2, diagonal_batch, 3, 3)
+    SIGNORINI_CURVED_SETUP(matrix_2d_q1, matrix_batch, 2, 2)
+    SIGNORINI_CURVED_SETUP(matrix_2d_q2, matrix_batch, 2, 3)
+    SIGNORINI_CURVED_SETUP(matrix_3d_q1, matrix_batch, 3, 2)
+    SIGNORINI_CURVED_SETUP(matrix_3d_q2, matrix_batch, 3, 3)
+#undef SIGNORINI_CURVED_SETUP
   } // namespace curved_kernels
 
   void
@@ -178,6 +296,20 @@ namespace signorini
           values[q * N + i]      = value_and_derivative[0];
           derivatives[q * N + i] = value_and_derivative[1];
         }
+    // Node A's reference gradient at point q (digits of A and q, the
+    // first fastest): G[(A * n_q + q) * dim + k].
+    const unsigned int n_q = n_points();
+    reference_gradients.resize(n_q * n_q * dim);
+    for (unsigned int A = 0; A < n_q; ++A)
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            double       product = 1.;
+            unsigned int a = A, p = q;
+            for (unsigned int d = 0; d < dim; ++d, a /= N, p /= N)
+              product *= (d == k ? derivatives : values)[(p % N) * N + a % N];
+            reference_gradients[(A * n_q + q) * dim + k] = product;
+          }
   }
 
   void
@@ -205,13 +337,57 @@ namespace signorini
     return n;
   }
 
-  void
-  CurvedCells::apply(const unsigned int batch, const double *x, double *y) const
+  unsigned int
+  CurvedCells::n_points() const
   {
     unsigned int n_q = 1;
     for (unsigned int d = 0; d < dim; ++d)
       n_q *= degree + 1;
-    const auto *B =
+    return n_q;
+  }
+
+  void
+  CurvedCells::diagonals(const unsigned int batch, double *diagonal) const
+  {
+    const unsigned int n_q = n_points();
+    const auto        *B =
+      reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
+      std::size_t(batch) * n_q * dim * dim;
+    curved_kernels::Lanes *h = nullptr;
+    auto         *out = reinterpret_cast<curved_kernels::Lanes *>(diagonal);
+    const double *G   = reference_gradients.data();
+    if (dim == 2)
+      (degree == 1 ? curved_kernels::diagonal_2d_q1 :
+                     curved_kernels::diagonal_2d_q2)(G, B, mu, lambda, h, out);
+    else
+      (degree == 1 ? curved_kernels::diagonal_3d_q1 :
+                     curved_kernels::diagonal_3d_q2)(G, B, mu, lambda, h, out);
+  }
+
+  void
+  CurvedCells::matrices(const unsigned int batch, double *K) const
+  {
+    const unsigned int n_q = n_points();
+    const auto        *B =
+      reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
+      std::size_t(batch) * n_q * dim * dim;
+    scratch.resize(std::size_t(n_q) * n_q * dim * lanes);
+    auto         *h = reinterpret_cast<curved_kernels::Lanes *>(scratch.data());
+    auto         *out = reinterpret_cast<curved_kernels::Lanes *>(K);
+    const double *G   = reference_gradients.data();
+    if (dim == 2)
+      (degree == 1 ? curved_kernels::matrix_2d_q1 :
+                     curved_kernels::matrix_2d_q2)(G, B, mu, lambda, h, out);
+    else
+      (degree == 1 ? curved_kernels::matrix_3d_q1 :
+                     curved_kernels::matrix_3d_q2)(G, B, mu, lambda, h, out);
+  }
+
+  void
+  CurvedCells::apply(const unsigned int batch, const double *x, double *y) const
+  {
+    const unsigned int n_q = n_points();
+    const auto        *B =
       reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
       std::size_t(batch) * n_q * dim * dim;
     const auto   *in  = reinterpret_cast<const curved_kernels::Lanes *>(x);

@@ -83,6 +83,8 @@ namespace signorini
     line_offsets.clear();
     line_entries.clear();
     line_dof.clear();
+    line_values = {};
+    line_forces = {};
     constraints = nullptr;
     dof_handler = nullptr;
     partitioner.reset();
@@ -231,49 +233,47 @@ namespace signorini
   {
     constexpr unsigned int n = dim * Utilities::pow(degree + 1, dim);
     // x = C src (src itself if @p as_given), dst += C^T y, C the
-    // constraints: a constrained dof is read from, and writes to, its
-    // line's dofs.
-    const auto gather = [&](const unsigned int cell, auto *x) {
-      const unsigned int *dofs =
-        &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
-      for (unsigned int i = 0; i < n; ++i)
-        if (dofs[i] & constrained_flag)
-          {
-            const unsigned int line = dofs[i] & ~constrained_flag;
-            if (as_given)
-              {
-                x[i] = src.local_element(line_dof[line]);
-                continue;
-              }
-            double value = 0.;
-            for (unsigned int e = line_offsets[line];
-                 e < line_offsets[line + 1];
-                 ++e)
-              value += line_entries[e].second *
-                       src.local_element(line_entries[e].first);
-            x[i] = value;
-          }
-        else
-          x[i] = src.local_element(dofs[i]);
-    };
-    const auto scatter = [&](const unsigned int cell, const auto *y) {
-      const unsigned int *dofs =
-        &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
-      for (unsigned int i = 0; i < n; ++i)
-        if (dofs[i] & constrained_flag)
-          {
-            const unsigned int line = dofs[i] & ~constrained_flag;
-            for (unsigned int e = line_offsets[line];
-                 e < line_offsets[line + 1];
-                 ++e)
-              dst.local_element(line_entries[e].first) +=
-                line_entries[e].second * y[i];
-          }
-        else
-          dst.local_element(dofs[i]) += y[i];
-    };
+    // constraints: a constrained dof is read from its line's value, and
+    // writes to its line's force, both once per line here.
+    const unsigned int n_lines = line_dof.size();
+    line_values.resize(n_lines);
+    line_forces.assign(n_lines, 0.);
+    for (unsigned int line = 0; line < n_lines; ++line)
+      if (as_given)
+        line_values[line] = src.local_element(line_dof[line]);
+      else
+        {
+          double value = 0.;
+          for (unsigned int e = line_offsets[line]; e < line_offsets[line + 1];
+               ++e)
+            value +=
+              line_entries[e].second * src.local_element(line_entries[e].first);
+          line_values[line] = value;
+        }
+    // A resolved cell's values, entry i at x[i * stride].
+    const auto gather =
+      [&](const unsigned int cell, auto *x, const unsigned int stride) {
+        const unsigned int *dofs =
+          &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
+        for (unsigned int i = 0; i < n; ++i)
+          x[i * stride] = (dofs[i] & constrained_flag) ?
+                            line_values[dofs[i] & ~constrained_flag] :
+                            src.local_element(dofs[i]);
+      };
+    const auto scatter =
+      [&](const unsigned int cell, const auto *y, const unsigned int stride) {
+        const unsigned int *dofs =
+          &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
+        for (unsigned int i = 0; i < n; ++i)
+          if (dofs[i] & constrained_flag)
+            line_forces[dofs[i] & ~constrained_flag] += y[i * stride];
+          else
+            dst.local_element(dofs[i]) += y[i * stride];
+      };
     // The curved cells of one batch: x by dof, then lane; applied once the
-    // batch is complete, another one begins, or the cells end.
+    // batch is complete, another one begins, or the cells end. (A lane
+    // without a cell keeps an earlier cell's values: finite, and its
+    // result is not read.)
     constexpr unsigned int          lanes = CurvedCells::lanes;
     AlignedVector<double>           batch_x(n * lanes), batch_y(n * lanes);
     std::array<unsigned int, lanes> staged;
@@ -282,14 +282,9 @@ namespace signorini
       if (staged_batch == CellMatrices::none)
         return;
       curved_cells.apply(staged_batch, batch_x.data(), batch_y.data());
-      double y[n];
       for (unsigned int l = 0; l < lanes; ++l)
         if (staged[l] != CellMatrices::none)
-          {
-            for (unsigned int i = 0; i < n; ++i)
-              y[i] = batch_y[i * lanes + l];
-            scatter(staged[l], y);
-          }
+          scatter(staged[l], &batch_y[l], lanes);
       staged_batch = CellMatrices::none;
     };
 
@@ -310,9 +305,9 @@ namespace signorini
         }
       else if (matrix_of_cell[cell] != CellMatrices::none)
         {
-          gather(cell, x);
+          gather(cell, x, 1);
           cell_matrices.apply(matrix_of_cell[cell], x, y);
-          scatter(cell, y);
+          scatter(cell, y, 1);
         }
       else
         {
@@ -322,16 +317,18 @@ namespace signorini
               flush();
               staged_batch = number / lanes;
               staged.fill(CellMatrices::none);
-              batch_x.fill(0.);
             }
           const unsigned int lane = number % lanes;
           staged[lane]            = cell;
-          double x_cell[n];
-          gather(cell, x_cell);
-          for (unsigned int i = 0; i < n; ++i)
-            batch_x[i * lanes + lane] = x_cell[i];
+          gather(cell, &batch_x[lane], lanes);
         }
     flush();
+    for (unsigned int line = 0; line < n_lines; ++line)
+      if (line_forces[line] != 0.)
+        for (unsigned int e = line_offsets[line]; e < line_offsets[line + 1];
+             ++e)
+          dst.local_element(line_entries[e].first) +=
+            line_entries[e].second * line_forces[line];
   }
 
   template <int dim>
@@ -469,19 +466,36 @@ namespace signorini
     line_dof.clear();
     std::unordered_map<types::global_dof_index, unsigned int> line_of;
     std::vector<types::global_dof_index>                      indices(n);
-    constexpr unsigned int lanes         = CurvedCells::lanes;
-    unsigned int           columns_batch = CellMatrices::none;
-    AlignedVector<double>  unit(n * lanes), image(n * lanes);
-    std::vector<double>    batch_columns(
-      curved_cells.n_cells() > 0 ? lanes * n * n : 0);
+    // A curved cell's diagonal, or where constraints couple its dofs its
+    // whole matrix, computed for its batch (eight cells) at once.
+    constexpr unsigned int lanes          = CurvedCells::lanes;
+    unsigned int           diagonal_batch = CellMatrices::none,
+                 matrix_batch             = CellMatrices::none;
+    AlignedVector<double> batch_diagonal, batch_matrix;
+    if (curved_cells.n_cells() > 0)
+      {
+        batch_diagonal.resize(n * lanes);
+        batch_matrix.resize(n * n * lanes);
+      }
+    std::vector<double> cell_matrix;
     std::vector<std::pair<types::global_dof_index,
                           std::vector<std::pair<unsigned int, double>>>>
       depends;
     for (unsigned int cell = 0; cell < cells.size(); ++cell)
       {
-        // K by columns, a column's entries `stride` apart.
-        const double *K      = nullptr;
-        unsigned int  stride = n;
+        cells[cell]->get_dof_indices(indices);
+        bool plain = true;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            plain = plain && !constraints->is_constrained(indices[k]);
+            cell_dofs[cell * n + position[k]] =
+              partitioner->global_to_local(indices[k]);
+          }
+        // K by columns, a column's entries `stride` apart (the diagonal of
+        // a plain curved cell: `curved_diagonal`, `lanes` apart).
+        const double *K               = nullptr;
+        const double *curved_diagonal = nullptr;
+        unsigned int  stride          = n;
         if (matrix_of_cell[cell] != CellMatrices::none)
           {
             K      = cell_matrices.matrix(matrix_of_cell[cell]);
@@ -490,35 +504,30 @@ namespace signorini
         else
           {
             // A curved cell (setup_cell_matrices() gave every cell without
-            // a matrix to curved_cells): the columns of its batch at once,
-            // K e_j in every lane.
+            // a matrix to curved_cells).
             const unsigned int number = curved_of_cell[cell];
-            if (number / lanes != columns_batch)
+            const unsigned int batch = number / lanes, lane = number % lanes;
+            if (plain)
               {
-                columns_batch = number / lanes;
-                for (unsigned int j = 0; j < n; ++j)
+                if (batch != diagonal_batch)
                   {
-                    unit.fill(0.);
-                    for (unsigned int l = 0; l < lanes; ++l)
-                      unit[j * lanes + l] = 1.;
-                    curved_cells.apply(columns_batch,
-                                       unit.data(),
-                                       image.data());
-                    for (unsigned int l = 0; l < lanes; ++l)
-                      for (unsigned int i = 0; i < n; ++i)
-                        batch_columns[(l * n + j) * n + i] =
-                          image[i * lanes + l];
+                    diagonal_batch = batch;
+                    curved_cells.diagonals(batch, batch_diagonal.data());
                   }
+                curved_diagonal = &batch_diagonal[lane];
               }
-            K = &batch_columns[(number % lanes) * n * n];
-          }
-        cells[cell]->get_dof_indices(indices);
-        bool plain = true;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            plain = plain && !constraints->is_constrained(indices[k]);
-            cell_dofs[cell * n + position[k]] =
-              partitioner->global_to_local(indices[k]);
+            else
+              {
+                if (batch != matrix_batch)
+                  {
+                    matrix_batch = batch;
+                    curved_cells.matrices(batch, batch_matrix.data());
+                  }
+                cell_matrix.resize(n * n);
+                for (unsigned int e = 0; e < n * n; ++e)
+                  cell_matrix[e] = batch_matrix[e * lanes + lane];
+                K = cell_matrix.data();
+              }
           }
         direct[cell] = plain && matrix_of_cell[cell] != CellMatrices::none;
         if (!plain)
@@ -549,7 +558,8 @@ namespace signorini
           {
             for (unsigned int k = 0; k < n; ++k)
               diagonal_without_contact(indices[k]) +=
-                K[position[k] * stride + position[k]];
+                curved_diagonal ? curved_diagonal[position[k] * lanes] :
+                                  K[position[k] * stride + position[k]];
             continue;
           }
         depends.clear();

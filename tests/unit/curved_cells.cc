@@ -4,7 +4,9 @@
 // the cell's stiffness matrix K (2 mu eps:eps + lambda div div, assembled by
 // FEValues at the same Gauss points) times x, to a relative 1e-13 of
 // sum |K_ij x_j|, for Q1 and Q2 in 2D and 3D, with a last batch of fewer
-// than eight cells. (tests/processor/ runs this on the kernels' other
+// than eight cells; and the matrices and diagonals it computes from the
+// gradients at the points (for the smoother's diagonal) equal K's to a
+// relative 1e-13. (tests/processor/ runs this on the kernels' other
 // copies.)
 
 #include <deal.II/base/quadrature_lib.h>
@@ -115,10 +117,42 @@ namespace
               }
           }
       }
+    // The matrices and diagonals from the points' gradients.
+    AlignedVector<double> bK(n * n * lanes), bd(n * lanes);
+    double                worst_matrix = 0., worst_diagonal = 0.;
+    for (unsigned int batch = 0; batch * lanes < xs.size(); ++batch)
+      {
+        curved.matrices(batch, bK.data());
+        curved.diagonals(batch, bd.data());
+        for (unsigned int l = 0; l < lanes && batch * lanes + l < xs.size();
+             ++l)
+          {
+            const auto &K     = matrices[batch * lanes + l];
+            double      scale = 0.;
+            for (const double entry : K)
+              scale = std::max(scale, std::abs(entry));
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                for (unsigned int b = 0; b < n; ++b)
+                  worst_matrix = std::max(worst_matrix,
+                                          std::abs(bK[(a * n + b) * lanes + l] -
+                                                   K[a * n + b]) /
+                                            scale);
+                worst_diagonal =
+                  std::max(worst_diagonal,
+                           std::abs(bd[a * lanes + l] - K[a * n + a]) /
+                             K[a * n + a]);
+              }
+          }
+      }
     std::cout << dim << "D, degree " << degree << ", " << xs.size()
               << " cells (" << (xs.size() + lanes - 1) / lanes
               << " batches):\n";
     checks::report("  max |K x - kernel| / sum |K_ij x_j|", worst, 1e-13);
+    checks::report("  max |K_ij - matrices()| / max |K_ij|",
+                   worst_matrix,
+                   1e-13);
+    checks::report("  max |K_ii - diagonals()| / K_ii", worst_diagonal, 1e-13);
   }
 } // namespace
 

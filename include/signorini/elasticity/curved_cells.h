@@ -57,7 +57,23 @@ namespace signorini
     void
     apply(const unsigned int batch, const double *x, double *y) const;
 
+    /** The diagonals of the cells of @p batch, by dof, then lane
+     * (diagonal[i * lanes + l]), aligned to 64 bytes: from the gradients
+     * at the points, without applying the operator to unit vectors. */
+    void
+    diagonals(const unsigned int batch, double *diagonal) const;
+
+    /** The stiffness matrices of the cells of @p batch, entry (i, j) of
+     * lane l at K[(i * n + j) * lanes + l] (n dofs per cell), aligned to
+     * 64 bytes; symmetric. */
+    void
+    matrices(const unsigned int batch, double *K) const;
+
   private:
+    /** The Gauss points per cell. */
+    unsigned int
+    n_points() const;
+
     unsigned int dim    = 0;
     unsigned int degree = 0;
     double       mu     = 0.;
@@ -66,8 +82,13 @@ namespace signorini
     /** The 1D Lagrange basis at its nodes (0, 1/2, 1 at degree 2) and its
      * derivative, at the Gauss points: [q][i]. */
     std::vector<double> values, derivatives;
+    /** Each node's reference gradient at each point:
+     * [node][q][k], nodes and points lexicographic. */
+    std::vector<double> reference_gradients;
     /** B of each batch: [batch][q][k][j][lane], aligned to 64 bytes. */
     dealii::AlignedVector<double> geometry;
+    /** The nodes' gradients at the points, for matrices(). */
+    mutable dealii::AlignedVector<double> scratch;
   };
 } // namespace signorini
 

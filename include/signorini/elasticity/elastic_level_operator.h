@@ -300,7 +300,10 @@ namespace signorini
     static constexpr unsigned int                constrained_flag = 1u << 31;
     /** Per line, the constrained dof's own local index (read where the
      * values are taken as given). */
-    std::vector<unsigned int>                line_dof;
+    std::vector<unsigned int> line_dof;
+    /** Per line, apply_cells()'s value of its dof and the force on it
+     * (scratch). */
+    mutable std::vector<double>              line_values, line_forces;
     const dealii::AffineConstraints<double> *constraints = nullptr;
     const dealii::DoFHandler<dim>           *dof_handler = nullptr;
     /** The vectors' layout: MatrixFree's, or setup_by_vertices()'s. */
