@@ -13,37 +13,47 @@ namespace signorini
     using Lanes =
       double __attribute__((vector_size(CurvedCells::lanes * sizeof(double))));
 
-    /** out = M_dir in: the 1D matrix M (N x N, [q][i]) along direction
-     * @p dir of an N^dim tensor, or its transpose. */
-    template <int dim, int N, bool transpose, typename In = Lanes>
+    /** out = M_dir in (or out += with @p add): the 1D matrix M (N x N,
+     * [q][i]) along direction @p dir of an N^dim tensor, or its transpose
+     * (out_i = sum_q M[q][i] in_q). */
+    template <int dim, int N, int dir, bool transpose, bool add = false>
     inline __attribute__((always_inline)) void
-    contract(const double *M, const int dir, const In *in, Lanes *out)
+    contract(const double *M, const Lanes *in, Lanes *out)
     {
       constexpr int size   = dim == 2 ? N * N : N * N * N;
-      const int     stride = dir == 0 ? 1 : dir == 1 ? N : N * N;
-      for (int base = 0; base < size; ++base)
-        {
-          // base with digit dir zero: one line along dir.
-          if ((base / stride) % N != 0)
-            continue;
-          Lanes line[N];
-          for (int i = 0; i < N; ++i)
-            line[i] = in[base + i * stride];
-          for (int q = 0; q < N; ++q)
-            {
-              Lanes sum = {};
-              for (int i = 0; i < N; ++i)
-                sum += (transpose ? M[i * N + q] : M[q * N + i]) * line[i];
-              out[base + q * stride] = sum;
-            }
-        }
+      constexpr int stride = dir == 0 ? 1 : dir == 1 ? N : N * N;
+      // The matrix in registers: `out` may alias doubles.
+      double m[N * N];
+      for (int e = 0; e < N * N; ++e)
+        m[e] = M[e];
+      for (int outer = 0; outer < size; outer += N * stride)
+        for (int inner = 0; inner < stride; ++inner)
+          {
+            const int base = outer + inner;
+            Lanes     line[N];
+            for (int i = 0; i < N; ++i)
+              line[i] = in[base + i * stride];
+            for (int q = 0; q < N; ++q)
+              {
+                Lanes sum = (transpose ? m[q] : m[q * N]) * line[0];
+                for (int i = 1; i < N; ++i)
+                  sum += (transpose ? m[i * N + q] : m[q * N + i]) * line[i];
+                if (add)
+                  out[base + q * stride] += sum;
+                else
+                  out[base + q * stride] = sum;
+              }
+          }
     }
 
-    /** y = K x of a batch (see CurvedCells). */
+    /** y = K x of a batch (see CurvedCells): the values interpolated to
+     * the Gauss points (S along each direction), their gradients there
+     * (the collocation derivative C along each), the stress tested the
+     * same way back. */
     template <int dim, int N>
     inline __attribute__((always_inline)) void
     apply_batch(const double *S,
-                const double *D,
+                const double *C,
                 const Lanes  *B,
                 const double  mu,
                 const double  lambda,
@@ -51,25 +61,26 @@ namespace signorini
                 Lanes        *y)
     {
       constexpr int nq = dim == 2 ? N * N : N * N * N;
-      // The reference gradients G[c][k][q].
-      Lanes G[dim][dim][nq], a[nq], b[nq];
+      // The gradients at the points G[c][k][q].
+      Lanes G[dim][dim][nq], values[nq], scratch[nq];
       for (int c = 0; c < dim; ++c)
-        for (int k = 0; k < dim; ++k)
-          {
-            const Lanes *from = x + c * nq;
-            Lanes       *to   = dim == 2 ? G[c][k] : a;
-            contract<dim, N, false, Lanes>(k == 0 ? D : S, 0, from, to);
-            if (dim == 2)
-              {
-                contract<dim, N, false>(k == 1 ? D : S, 1, G[c][k], b);
-                std::copy(b, b + nq, G[c][k]);
-              }
-            else
-              {
-                contract<dim, N, false>(k == 1 ? D : S, 1, a, b);
-                contract<dim, N, false>(k == 2 ? D : S, 2, b, G[c][k]);
-              }
-          }
+        {
+          if constexpr (dim == 2)
+            {
+              contract<dim, N, 0, false>(S, x + c * nq, scratch);
+              contract<dim, N, 1, false>(S, scratch, values);
+            }
+          else
+            {
+              contract<dim, N, 0, false>(S, x + c * nq, values);
+              contract<dim, N, 1, false>(S, values, scratch);
+              contract<dim, N, 2, false>(S, scratch, values);
+            }
+          contract<dim, N, 0, false>(C, values, G[c][0]);
+          contract<dim, N, 1, false>(C, values, G[c][1]);
+          if constexpr (dim == 3)
+            contract<dim, N, 2, false>(C, values, G[c][dim - 1]);
+        }
       // At each point: H = G B, sigma(H), T = sigma B^T, into G.
       for (int q = 0; q < nq; ++q)
         {
@@ -101,28 +112,22 @@ namespace signorini
                 G[c][k][q] = sum;
               }
         }
-      // y_c = sum_k (the transposed contractions of T[c][k]).
+      // y_c = S^T (sum_k C_k^T T[c][k]).
       for (int c = 0; c < dim; ++c)
         {
-          Lanes *out = y + c * nq;
-          for (int i = 0; i < nq; ++i)
-            out[i] = Lanes{};
-          for (int k = 0; k < dim; ++k)
+          contract<dim, N, 0, true>(C, G[c][0], values);
+          contract<dim, N, 1, true, true>(C, G[c][1], values);
+          if constexpr (dim == 2)
             {
-              if (dim == 2)
-                {
-                  contract<dim, N, true>(k == 1 ? D : S, 1, G[c][k], a);
-                  contract<dim, N, true>(k == 0 ? D : S, 0, a, b);
-                }
-              else
-                {
-                  contract<dim, N, true>(k == 2 ? D : S, 2, G[c][k], a);
-                  contract<dim, N, true>(k == 1 ? D : S, 1, a, b);
-                  contract<dim, N, true>(k == 0 ? D : S, 0, b, a);
-                  std::copy(a, a + nq, b);
-                }
-              for (int i = 0; i < nq; ++i)
-                out[i] += b[i];
+              contract<dim, N, 0, true>(S, values, scratch);
+              contract<dim, N, 1, true>(S, scratch, y + c * nq);
+            }
+          else
+            {
+              contract<dim, N, 2, true, true>(C, G[c][dim - 1], values);
+              contract<dim, N, 0, true>(S, values, scratch);
+              contract<dim, N, 1, true>(S, scratch, values);
+              contract<dim, N, 2, true>(S, values, y + c * nq);
             }
         }
     }
@@ -230,14 +235,14 @@ namespace signorini
     // instruction set.
 #define SIGNORINI_CURVED_KERNEL(name, dim, N)           \
   SIGNORINI_WIDE_KERNEL void name(const double *S,      \
-                                  const double *D,      \
+                                  const double *C,      \
                                   const Lanes  *B,      \
                                   const double  mu,     \
                                   const double  lambda, \
                                   const Lanes  *x,      \
                                   Lanes        *y)      \
   {                                                     \
-    apply_batch<dim, N>(S, D, B, mu, lambda, x, y);     \
+    apply_batch<dim, N>(S, C, B, mu, lambda, x, y);     \
   }
     SIGNORINI_CURVED_KERNEL(apply_quadrilaterals, 2, 2)
     SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2, 2, 3)
@@ -295,6 +300,17 @@ namespace signorini
           basis[i].value(gauss.point(q)[0], value_and_derivative);
           values[q * N + i]      = value_and_derivative[0];
           derivatives[q * N + i] = value_and_derivative[1];
+        }
+    // The collocation derivative: the derivative of the Lagrange basis on
+    // the Gauss points, at the Gauss points.
+    const auto gauss_basis =
+      dealii::Polynomials::generate_complete_Lagrange_basis(gauss.get_points());
+    collocation.resize(N * N);
+    for (unsigned int q = 0; q < N; ++q)
+      for (unsigned int p = 0; p < N; ++p)
+        {
+          gauss_basis[p].value(gauss.point(q)[0], value_and_derivative);
+          collocation[q * N + p] = value_and_derivative[1];
         }
     // Node A's reference gradient at point q (digits of A and q, the
     // first fastest): G[(A * n_q + q) * dim + k].
@@ -392,15 +408,15 @@ namespace signorini
       std::size_t(batch) * n_q * dim * dim;
     const auto   *in  = reinterpret_cast<const curved_kernels::Lanes *>(x);
     auto         *out = reinterpret_cast<curved_kernels::Lanes *>(y);
-    const double *S = values.data(), *D = derivatives.data();
+    const double *S = values.data(), *C = collocation.data();
     if (dim == 2)
       (degree == 1 ?
          curved_kernels::apply_quadrilaterals :
-         curved_kernels::apply_quadrilaterals_q2)(S, D, B, mu, lambda, in, out);
+         curved_kernels::apply_quadrilaterals_q2)(S, C, B, mu, lambda, in, out);
     else
       (degree == 1 ?
          curved_kernels::apply_hexahedra :
-         curved_kernels::apply_hexahedra_q2)(S, D, B, mu, lambda, in, out);
+         curved_kernels::apply_hexahedra_q2)(S, C, B, mu, lambda, in, out);
   }
 
 } // namespace signorini
