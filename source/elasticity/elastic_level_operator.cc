@@ -76,10 +76,13 @@ namespace signorini
     cell_matrices.clear();
     matrix_of_cell = {};
     curved_cells.clear();
-    curved_of_cell = {};
-    cell_dofs      = {};
-    resolved_dofs  = {};
-    direct         = {};
+    curved_of_cell      = {};
+    cell_dofs           = {};
+    resolved_dofs       = {};
+    batch_dofs          = {};
+    batch_patches       = {};
+    batch_patch_offsets = {};
+    direct              = {};
     line_offsets.clear();
     line_entries.clear();
     line_dof.clear();
@@ -232,6 +235,10 @@ namespace signorini
     const std::pair<unsigned int, unsigned int> &cells) const
   {
     constexpr unsigned int n = dim * Utilities::pow(degree + 1, dim);
+    // The values by local index, owned and ghost ones (raw: a store through
+    // dst does not make the compiler read either vector's address again).
+    const double *const in  = src.begin();
+    double *const       out = dst.begin();
     // x = C src (src itself if @p as_given), dst += C^T y, C the
     // constraints: a constrained dof is read from its line's value, and
     // writes to its line's force, both once per line here.
@@ -240,52 +247,59 @@ namespace signorini
     line_forces.assign(n_lines, 0.);
     for (unsigned int line = 0; line < n_lines; ++line)
       if (as_given)
-        line_values[line] = src.local_element(line_dof[line]);
+        line_values[line] = in[line_dof[line]];
       else
         {
           double value = 0.;
           for (unsigned int e = line_offsets[line]; e < line_offsets[line + 1];
                ++e)
-            value +=
-              line_entries[e].second * src.local_element(line_entries[e].first);
+            value += line_entries[e].second * in[line_entries[e].first];
           line_values[line] = value;
         }
-    // A resolved cell's values, entry i at x[i * stride].
-    const auto gather =
-      [&](const unsigned int cell, auto *x, const unsigned int stride) {
-        const unsigned int *dofs =
-          &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
-        for (unsigned int i = 0; i < n; ++i)
-          x[i * stride] = (dofs[i] & constrained_flag) ?
-                            line_values[dofs[i] & ~constrained_flag] :
-                            src.local_element(dofs[i]);
-      };
-    const auto scatter =
-      [&](const unsigned int cell, const auto *y, const unsigned int stride) {
-        const unsigned int *dofs =
-          &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
-        for (unsigned int i = 0; i < n; ++i)
-          if (dofs[i] & constrained_flag)
-            line_forces[dofs[i] & ~constrained_flag] += y[i * stride];
-          else
-            dst.local_element(dofs[i]) += y[i * stride];
-      };
-    // The curved cells of one batch: x by dof, then lane; applied once the
-    // batch is complete, another one begins, or the cells end. (A lane
-    // without a cell keeps an earlier cell's values: finite, and its
-    // result is not read.)
-    constexpr unsigned int          lanes = CurvedCells::lanes;
-    AlignedVector<double>           batch_x(n * lanes), batch_y(n * lanes);
-    std::array<unsigned int, lanes> staged;
-    unsigned int                    staged_batch = CellMatrices::none;
-    const auto                      flush        = [&]() {
-      if (staged_batch == CellMatrices::none)
-        return;
-      curved_cells.apply(staged_batch, batch_x.data(), batch_y.data());
-      for (unsigned int l = 0; l < lanes; ++l)
-        if (staged[l] != CellMatrices::none)
-          scatter(staged[l], &batch_y[l], lanes);
-      staged_batch = CellMatrices::none;
+    // A resolved cell's values, and its forces.
+    const auto gather = [&](const unsigned int cell, CellNumber *x) {
+      const unsigned int *dofs =
+        &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
+      for (unsigned int i = 0; i < n; ++i)
+        x[i] = (dofs[i] & constrained_flag) ?
+                 line_values[dofs[i] & ~constrained_flag] :
+                 in[dofs[i]];
+    };
+    const auto scatter = [&](const unsigned int cell, const CellNumber *y) {
+      const unsigned int *dofs =
+        &resolved_dofs[std::size_t(cell_dofs[cell * (n / dim)]) * n];
+      for (unsigned int i = 0; i < n; ++i)
+        if (dofs[i] & constrained_flag)
+          line_forces[dofs[i] & ~constrained_flag] += y[i];
+        else
+          out[dofs[i]] += y[i];
+    };
+    // The curved cells a batch at a time (when its first lane's cell comes):
+    // x by dof, then lane, read and written through the batch's entries.
+    constexpr unsigned int lanes = CurvedCells::lanes;
+    AlignedVector<double>  batch_x(n * lanes), batch_y(n * lanes);
+    const auto             apply_batch = [&](const unsigned int batch) {
+      const unsigned int *dofs = &batch_dofs[std::size_t(batch) * n * lanes];
+      for (unsigned int k = 0; k < n * lanes; ++k)
+        batch_x[k] = in[dofs[k]];
+      const unsigned int first = batch_patch_offsets[batch],
+                         last  = batch_patch_offsets[batch + 1];
+      for (unsigned int p = first; p < last; ++p)
+        {
+          const auto [position, line] = batch_patches[p];
+          batch_x[position] =
+            line == CellMatrices::none ? 0. : line_values[line];
+        }
+      curved_cells.apply(batch, batch_x.data(), batch_y.data());
+      for (unsigned int p = first; p < last; ++p)
+        {
+          const auto [position, line] = batch_patches[p];
+          if (line != CellMatrices::none)
+            line_forces[line] += batch_y[position];
+          batch_y[position] = 0.;
+        }
+      for (unsigned int k = 0; k < n * lanes; ++k)
+        out[dofs[k]] += batch_y[k];
     };
 
     CellNumber x[n], y[n];
@@ -297,37 +311,25 @@ namespace signorini
           const unsigned int    *base     = &cell_dofs[cell * n_vertex];
           for (unsigned int v = 0; v < n_vertex; ++v)
             for (unsigned int a = 0; a < dim; ++a)
-              x[a * n_vertex + v] = src.local_element(base[v] + a);
+              x[a * n_vertex + v] = in[base[v] + a];
           cell_matrices.apply(matrix_of_cell[cell], x, y);
           for (unsigned int v = 0; v < n_vertex; ++v)
             for (unsigned int a = 0; a < dim; ++a)
-              dst.local_element(base[v] + a) += y[a * n_vertex + v];
+              out[base[v] + a] += y[a * n_vertex + v];
         }
       else if (matrix_of_cell[cell] != CellMatrices::none)
         {
-          gather(cell, x, 1);
+          gather(cell, x);
           cell_matrices.apply(matrix_of_cell[cell], x, y);
-          scatter(cell, y, 1);
+          scatter(cell, y);
         }
-      else
-        {
-          const unsigned int number = curved_of_cell[cell];
-          if (number / lanes != staged_batch)
-            {
-              flush();
-              staged_batch = number / lanes;
-              staged.fill(CellMatrices::none);
-            }
-          const unsigned int lane = number % lanes;
-          staged[lane]            = cell;
-          gather(cell, &batch_x[lane], lanes);
-        }
-    flush();
+      else if (curved_of_cell[cell] % lanes == 0)
+        apply_batch(curved_of_cell[cell] / lanes);
     for (unsigned int line = 0; line < n_lines; ++line)
       if (line_forces[line] != 0.)
         for (unsigned int e = line_offsets[line]; e < line_offsets[line + 1];
              ++e)
-          dst.local_element(line_entries[e].first) +=
+          out[line_entries[e].first] +=
             line_entries[e].second * line_forces[line];
   }
 
@@ -606,8 +608,46 @@ namespace signorini
     // The resolved cells' n entries, in order, in resolved_dofs; their
     // first entry in cell_dofs says where.
     const auto resolved_cell = [&](const unsigned int cell) {
-      return !direct[cell];
+      return !direct[cell] && matrix_of_cell[cell] != CellMatrices::none;
     };
+    // The curved cells' entries by batch, then dof, then lane; a
+    // constrained entry (and a lane without a cell) reads entry 0 and is
+    // patched from `batch_patches`.
+    constexpr unsigned int lanes = CurvedCells::lanes;
+    const unsigned int n_batches = (curved_cells.n_cells() + lanes - 1) / lanes;
+    batch_dofs.assign(std::size_t(n_batches) * n * lanes, 0);
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> patches(
+      n_batches);
+    std::vector<bool> filled(std::size_t(n_batches) * lanes, false);
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
+      if (curved_of_cell[cell] != CellMatrices::none)
+        {
+          const unsigned int number = curved_of_cell[cell];
+          const unsigned int batch = number / lanes, lane = number % lanes;
+          filled[number] = true;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int entry    = cell_dofs[cell * n + i];
+              const unsigned int position = i * lanes + lane;
+              if (entry & constrained_flag)
+                patches[batch].emplace_back(position,
+                                            entry & ~constrained_flag);
+              else
+                batch_dofs[std::size_t(batch) * n * lanes + position] = entry;
+            }
+        }
+    for (unsigned int number = 0; number < n_batches * lanes; ++number)
+      if (!filled[number])
+        for (unsigned int i = 0; i < n; ++i)
+          patches[number / lanes].emplace_back(i * lanes + number % lanes,
+                                               CellMatrices::none);
+    batch_patch_offsets.assign(1, 0);
+    batch_patches.clear();
+    for (const auto &list : patches)
+      {
+        batch_patches.insert(batch_patches.end(), list.begin(), list.end());
+        batch_patch_offsets.push_back(batch_patches.size());
+      }
     resolved_dofs.clear();
     for (unsigned int cell = 0; cell < n_cells; ++cell)
       if (resolved_cell(cell))

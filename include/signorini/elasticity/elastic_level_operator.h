@@ -301,6 +301,14 @@ namespace signorini
     /** Per line, the constrained dof's own local index (read where the
      * values are taken as given). */
     std::vector<unsigned int> line_dof;
+    /** The curved cells' local indices, a batch at a time: entry
+     * (batch * n + i) * lanes + lane for dof i of the batch's cell in
+     * that lane, 0 for a constrained dof or a lane without a cell, which
+     * batch_patches list (their position in the batch, and the dof's line
+     * or CellMatrices::none), batch_patch_offsets[batch] on. */
+    std::vector<unsigned int>                          batch_dofs;
+    std::vector<std::pair<unsigned int, unsigned int>> batch_patches;
+    std::vector<unsigned int>                          batch_patch_offsets;
     /** Per line, apply_cells()'s value of its dof and the force on it
      * (scratch). */
     mutable std::vector<double>              line_values, line_forces;
