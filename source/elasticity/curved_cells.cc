@@ -10,32 +10,55 @@ namespace signorini
 {
   namespace curved_kernels
   {
-    using Lanes =
-      double __attribute__((vector_size(CurvedCells::lanes * sizeof(double))));
+    /** A register of 64 bytes: eight doubles, or sixteen floats. */
+    template <typename Number>
+    struct WideOf;
+    template <>
+    struct WideOf<double>
+    {
+      typedef double type __attribute__((vector_size(64)));
+    };
+    template <>
+    struct WideOf<float>
+    {
+      typedef float type __attribute__((vector_size(64)));
+    };
+    template <typename Number>
+    using Wide  = typename WideOf<Number>::type;
+    using Lanes = Wide<double>;
+    static_assert(CurvedCells::lanes * sizeof(double) == 64 &&
+                    CurvedCells::single_lanes * sizeof(float) == 64,
+                  "a batch fills a register of 64 bytes");
 
     /** out = M_dir in (or out += with @p add): the 1D matrix M (N x N,
      * [q][i]) along direction @p dir of an N^dim tensor, or its transpose
      * (out_i = sum_q M[q][i] in_q). */
-    template <int dim, int N, int dir, bool transpose, bool add = false>
+    template <int  dim,
+              int  N,
+              int  dir,
+              bool transpose,
+              bool add = false,
+              typename Number,
+              typename Vector>
     inline __attribute__((always_inline)) void
-    contract(const double *M, const Lanes *in, Lanes *out)
+    contract(const Number *M, const Vector *in, Vector *out)
     {
       constexpr int size   = dim == 2 ? N * N : N * N * N;
       constexpr int stride = dir == 0 ? 1 : dir == 1 ? N : N * N;
-      // The matrix in registers: `out` may alias doubles.
-      double m[N * N];
+      // The matrix in registers: `out` may alias its numbers.
+      Number m[N * N];
       for (int e = 0; e < N * N; ++e)
         m[e] = M[e];
       for (int outer = 0; outer < size; outer += N * stride)
         for (int inner = 0; inner < stride; ++inner)
           {
             const int base = outer + inner;
-            Lanes     line[N];
+            Vector    line[N];
             for (int i = 0; i < N; ++i)
               line[i] = in[base + i * stride];
             for (int q = 0; q < N; ++q)
               {
-                Lanes sum = (transpose ? m[q] : m[q * N]) * line[0];
+                Vector sum = (transpose ? m[q] : m[q * N]) * line[0];
                 for (int i = 1; i < N; ++i)
                   sum += (transpose ? m[i * N + q] : m[q * N + i]) * line[i];
                 if (add)
@@ -50,16 +73,17 @@ namespace signorini
      * the Gauss points (S along each direction), their gradients there
      * (the collocation derivative C along each), the stress tested the
      * same way back. */
-    template <int dim, int N>
+    template <int dim, int N, typename Number>
     inline __attribute__((always_inline)) void
-    apply_batch(const double *S,
-                const double *C,
-                const Lanes  *B,
-                const double  mu,
-                const double  lambda,
-                const Lanes  *x,
-                Lanes        *y)
+    apply_batch(const Number       *S,
+                const Number       *C,
+                const Wide<Number> *B,
+                const Number        mu,
+                const Number        lambda,
+                const Wide<Number> *x,
+                Wide<Number>       *y)
     {
+      using Lanes      = Wide<Number>;
       constexpr int nq = dim == 2 ? N * N : N * N * N;
       // The gradients at the points G[c][k][q].
       Lanes G[dim][dim][nq], values[nq], scratch[nq];
@@ -233,21 +257,25 @@ namespace signorini
 
     // One plain function per case, which target_clones copies per
     // instruction set.
-#define SIGNORINI_CURVED_KERNEL(name, dim, N)           \
-  SIGNORINI_WIDE_KERNEL void name(const double *S,      \
-                                  const double *C,      \
-                                  const Lanes  *B,      \
-                                  const double  mu,     \
-                                  const double  lambda, \
-                                  const Lanes  *x,      \
-                                  Lanes        *y)      \
-  {                                                     \
-    apply_batch<dim, N>(S, C, B, mu, lambda, x, y);     \
+#define SIGNORINI_CURVED_KERNEL(name, dim, N, Number)         \
+  SIGNORINI_WIDE_KERNEL void name(const Number       *S,      \
+                                  const Number       *C,      \
+                                  const Wide<Number> *B,      \
+                                  const Number        mu,     \
+                                  const Number        lambda, \
+                                  const Wide<Number> *x,      \
+                                  Wide<Number>       *y)      \
+  {                                                           \
+    apply_batch<dim, N, Number>(S, C, B, mu, lambda, x, y);   \
   }
-    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals, 2, 2)
-    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2, 2, 3)
-    SIGNORINI_CURVED_KERNEL(apply_hexahedra, 3, 2)
-    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2, 3, 3)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals, 2, 2, double)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2, 2, 3, double)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra, 3, 2, double)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2, 3, 3, double)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_single, 2, 2, float)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2_single, 2, 3, float)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra_single, 3, 2, float)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2_single, 3, 3, float)
 #undef SIGNORINI_CURVED_KERNEL
 #define SIGNORINI_CURVED_SETUP(name, batch_function, dim, N) \
   SIGNORINI_WIDE_KERNEL void name(const double *G,           \
@@ -282,6 +310,7 @@ namespace signorini
     this->lambda = lambda;
     n            = 0;
     geometry.clear();
+    single_geometry.clear();
     // The 1D basis at the nodes 0, ..., 1 (lexicographic), at the Gauss
     // points of degree + 1.
     const unsigned int            N = degree + 1;
@@ -312,6 +341,8 @@ namespace signorini
           gauss_basis[p].value(gauss.point(q)[0], value_and_derivative);
           collocation[q * N + p] = value_and_derivative[1];
         }
+    single_values.assign(values.begin(), values.end());
+    single_collocation.assign(collocation.begin(), collocation.end());
     // Node A's reference gradient at point q (digits of A and q, the
     // first fastest): G[(A * n_q + q) * dim + k].
     const unsigned int n_q = n_points();
@@ -333,6 +364,7 @@ namespace signorini
   {
     n = 0;
     geometry.clear();
+    single_geometry.clear();
   }
 
   unsigned int
@@ -344,6 +376,12 @@ namespace signorini
     double *batch = geometry.data() + (n / lanes) * per_batch;
     for (std::size_t e = 0; e < B.size(); ++e)
       batch[e * lanes + n % lanes] = B[e];
+    const unsigned int per_single = B.size() * single_lanes;
+    if (n % single_lanes == 0)
+      single_geometry.resize(single_geometry.size() + per_single, 0.f);
+    float *single = single_geometry.data() + (n / single_lanes) * per_single;
+    for (std::size_t e = 0; e < B.size(); ++e)
+      single[e * single_lanes + n % single_lanes] = B[e];
     return n++;
   }
 
@@ -417,6 +455,29 @@ namespace signorini
       (degree == 1 ?
          curved_kernels::apply_hexahedra :
          curved_kernels::apply_hexahedra_q2)(S, C, B, mu, lambda, in, out);
+  }
+
+  void
+  CurvedCells::apply_single(const unsigned int batch,
+                            const float       *x,
+                            float             *y) const
+  {
+    using Lanes            = curved_kernels::Wide<float>;
+    const unsigned int n_q = n_points();
+    const auto *B = reinterpret_cast<const Lanes *>(single_geometry.data()) +
+                    std::size_t(batch) * n_q * dim * dim;
+    const auto  *in  = reinterpret_cast<const Lanes *>(x);
+    auto        *out = reinterpret_cast<Lanes *>(y);
+    const float *S = single_values.data(), *C = single_collocation.data();
+    const float  m = mu, l = lambda;
+    if (dim == 2)
+      (degree == 1 ? curved_kernels::apply_quadrilaterals_single :
+                     curved_kernels::apply_quadrilaterals_q2_single)(
+        S, C, B, m, l, in, out);
+    else
+      (degree == 1 ?
+         curved_kernels::apply_hexahedra_single :
+         curved_kernels::apply_hexahedra_q2_single)(S, C, B, m, l, in, out);
   }
 
 } // namespace signorini

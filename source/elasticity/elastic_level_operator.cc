@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <unordered_map>
 
 namespace signorini
@@ -275,31 +276,67 @@ namespace signorini
           out[dofs[i]] += y[i];
     };
     // The curved cells a batch at a time (when its first lane's cell comes):
-    // x by dof, then lane, read and written through the batch's entries.
-    constexpr unsigned int lanes = CurvedCells::lanes;
-    AlignedVector<double>  batch_x(n * lanes), batch_y(n * lanes);
-    const auto             apply_batch = [&](const unsigned int batch) {
-      const unsigned int *dofs = &batch_dofs[std::size_t(batch) * n * lanes];
-      for (unsigned int k = 0; k < n * lanes; ++k)
-        batch_x[k] = in[dofs[k]];
-      const unsigned int first = batch_patch_offsets[batch],
-                         last  = batch_patch_offsets[batch + 1];
-      for (unsigned int p = first; p < last; ++p)
+    // x by dof, then lane, read and written through the index lists of
+    // their batches of eight; in single precision (CellNumber float), two
+    // of them side by side, sixteen lanes.
+    constexpr bool         single = std::is_same_v<CellNumber, float>;
+    constexpr unsigned int lanes  = CurvedCells::lanes,
+                           wide   = single ? CurvedCells::single_lanes : lanes;
+    const unsigned int        n_batches = batch_patch_offsets.size() - 1;
+    AlignedVector<CellNumber> batch_x(n * wide), batch_y(n * wide);
+    const auto                apply_batch = [&](const unsigned int batch) {
+      // Batch of eight b is lanes (b % halves) * 8 on of the wide batch.
+      constexpr unsigned int halves = wide / lanes;
+      // Entry `position` (dof, then lane) of batch of eight `half`.
+      const auto slot = [&](const unsigned int half,
+                            const unsigned int position) {
+        return (position / lanes) * wide + half * lanes + position % lanes;
+      };
+      for (unsigned int half = 0; half < halves; ++half)
         {
-          const auto [position, line] = batch_patches[p];
-          batch_x[position] =
-            line == CellMatrices::none ? 0. : line_values[line];
+          const unsigned int eight = batch * halves + half;
+          if (eight >= n_batches)
+            {
+              for (unsigned int position = 0; position < n * lanes; ++position)
+                batch_x[slot(half, position)] = 0.;
+              continue;
+            }
+          const unsigned int *dofs =
+            &batch_dofs[std::size_t(eight) * n * lanes];
+          for (unsigned int position = 0; position < n * lanes; ++position)
+            batch_x[slot(half, position)] = in[dofs[position]];
+          for (unsigned int p = batch_patch_offsets[eight];
+               p < batch_patch_offsets[eight + 1];
+               ++p)
+            {
+              const auto [position, line] = batch_patches[p];
+              batch_x[slot(half, position)] =
+                line == CellMatrices::none ? 0. : line_values[line];
+            }
         }
-      curved_cells.apply(batch, batch_x.data(), batch_y.data());
-      for (unsigned int p = first; p < last; ++p)
+      if constexpr (single)
+        curved_cells.apply_single(batch, batch_x.data(), batch_y.data());
+      else
+        curved_cells.apply(batch, batch_x.data(), batch_y.data());
+      for (unsigned int half = 0; half < halves; ++half)
         {
-          const auto [position, line] = batch_patches[p];
-          if (line != CellMatrices::none)
-            line_forces[line] += batch_y[position];
-          batch_y[position] = 0.;
+          const unsigned int eight = batch * halves + half;
+          if (eight >= n_batches)
+            continue;
+          for (unsigned int p = batch_patch_offsets[eight];
+               p < batch_patch_offsets[eight + 1];
+               ++p)
+            {
+              const auto [position, line] = batch_patches[p];
+              if (line != CellMatrices::none)
+                line_forces[line] += batch_y[slot(half, position)];
+              batch_y[slot(half, position)] = 0.;
+            }
+          const unsigned int *dofs =
+            &batch_dofs[std::size_t(eight) * n * lanes];
+          for (unsigned int position = 0; position < n * lanes; ++position)
+            out[dofs[position]] += batch_y[slot(half, position)];
         }
-      for (unsigned int k = 0; k < n * lanes; ++k)
-        out[dofs[k]] += batch_y[k];
     };
 
     CellNumber x[n], y[n];
@@ -323,8 +360,8 @@ namespace signorini
           cell_matrices.apply(matrix_of_cell[cell], x, y);
           scatter(cell, y);
         }
-      else if (curved_of_cell[cell] % lanes == 0)
-        apply_batch(curved_of_cell[cell] / lanes);
+      else if (curved_of_cell[cell] % wide == 0)
+        apply_batch(curved_of_cell[cell] / wide);
     for (unsigned int line = 0; line < n_lines; ++line)
       if (line_forces[line] != 0.)
         for (unsigned int e = line_offsets[line]; e < line_offsets[line + 1];
