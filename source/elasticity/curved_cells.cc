@@ -5,6 +5,7 @@
 
 #include "wide_kernel.h"
 #include <algorithm>
+#include <cmath>
 
 namespace signorini
 {
@@ -73,7 +74,7 @@ namespace signorini
      * the Gauss points (S along each direction), their gradients there
      * (the collocation derivative C along each), the stress tested the
      * same way back. */
-    template <int dim, int N, typename Number>
+    template <int dim, int N, typename Number, bool affine = false>
     inline __attribute__((always_inline)) void
     apply_batch(const Number       *S,
                 const Number       *C,
@@ -81,7 +82,8 @@ namespace signorini
                 const Number        mu,
                 const Number        lambda,
                 const Wide<Number> *x,
-                Wide<Number>       *y)
+                Wide<Number>       *y,
+                const Number       *weights = nullptr)
     {
       using Lanes      = Wide<Number>;
       constexpr int nq = dim == 2 ? N * N : N * N * N;
@@ -108,7 +110,8 @@ namespace signorini
       // At each point: H = G B, sigma(H), T = sigma B^T, into G.
       for (int q = 0; q < nq; ++q)
         {
-          const Lanes *Bq = B + q * dim * dim;
+          // An affine batch: B_q = sqrt(w_q) B, its weight applied once.
+          const Lanes *Bq = affine ? B : B + q * dim * dim;
           Lanes        H[dim][dim];
           for (int c = 0; c < dim; ++c)
             for (int j = 0; j < dim; ++j)
@@ -133,7 +136,7 @@ namespace signorini
                 Lanes sum = sigma[c][0] * Bq[k * dim];
                 for (int j = 1; j < dim; ++j)
                   sum += sigma[c][j] * Bq[k * dim + j];
-                G[c][k][q] = sum;
+                G[c][k][q] = affine ? weights[q] * sum : sum;
               }
         }
       // y_c = S^T (sum_k C_k^T T[c][k]).
@@ -277,6 +280,24 @@ namespace signorini
     SIGNORINI_CURVED_KERNEL(apply_hexahedra_single, 3, 2, float)
     SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2_single, 3, 3, float)
 #undef SIGNORINI_CURVED_KERNEL
+    // Q2 cells that are parallelepipeds: one B a cell.
+#define SIGNORINI_AFFINE_KERNEL(name, dim, N, Number)                      \
+  SIGNORINI_WIDE_KERNEL void name(const Number       *S,                   \
+                                  const Number       *C,                   \
+                                  const Wide<Number> *B,                   \
+                                  const Number        mu,                  \
+                                  const Number        lambda,              \
+                                  const Wide<Number> *x,                   \
+                                  Wide<Number>       *y,                   \
+                                  const Number       *weights)             \
+  {                                                                        \
+    apply_batch<dim, N, Number, true>(S, C, B, mu, lambda, x, y, weights); \
+  }
+    SIGNORINI_AFFINE_KERNEL(apply_parallelograms_q2, 2, 3, double)
+    SIGNORINI_AFFINE_KERNEL(apply_parallelepipeds_q2, 3, 3, double)
+    SIGNORINI_AFFINE_KERNEL(apply_parallelograms_q2_single, 2, 3, float)
+    SIGNORINI_AFFINE_KERNEL(apply_parallelepipeds_q2_single, 3, 3, float)
+#undef SIGNORINI_AFFINE_KERNEL
 #define SIGNORINI_CURVED_SETUP(name, batch_function, dim, N) \
   SIGNORINI_WIDE_KERNEL void name(const double *G,           \
                                   const Lanes  *B,           \
@@ -302,12 +323,16 @@ namespace signorini
   CurvedCells::reinit(const unsigned int dim,
                       const unsigned int degree,
                       const double       mu,
-                      const double       lambda)
+                      const double       lambda,
+                      const bool         affine)
   {
+    AssertThrow(!affine || degree == 2,
+                dealii::ExcMessage("affine batches are of degree 2"));
     this->dim    = dim;
     this->degree = degree;
     this->mu     = mu;
     this->lambda = lambda;
+    this->affine = affine;
     n            = 0;
     geometry.clear();
     single_geometry.clear();
@@ -341,11 +366,17 @@ namespace signorini
           gauss_basis[p].value(gauss.point(q)[0], value_and_derivative);
           collocation[q * N + p] = value_and_derivative[1];
         }
+    // The tensor-product Gauss weights, lexicographic.
+    const unsigned int n_q = n_points();
+    weights.assign(n_q, 1.);
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int d = 0, p = q; d < dim; ++d, p /= N)
+        weights[q] *= gauss.weight(p % N);
+    single_weights.assign(weights.begin(), weights.end());
     single_values.assign(values.begin(), values.end());
     single_collocation.assign(collocation.begin(), collocation.end());
     // Node A's reference gradient at point q (digits of A and q, the
     // first fastest): G[(A * n_q + q) * dim + k].
-    const unsigned int n_q = n_points();
     reference_gradients.resize(n_q * n_q * dim);
     for (unsigned int A = 0; A < n_q; ++A)
       for (unsigned int q = 0; q < n_q; ++q)
@@ -392,6 +423,12 @@ namespace signorini
   }
 
   unsigned int
+  CurvedCells::cell_entries() const
+  {
+    return affine ? dim * dim : n_points() * dim * dim;
+  }
+
+  unsigned int
   CurvedCells::n_points() const
   {
     unsigned int n_q = 1;
@@ -400,13 +437,26 @@ namespace signorini
     return n_q;
   }
 
+  const double *
+  CurvedCells::point_geometry(const unsigned int batch) const
+  {
+    const unsigned int n_q = n_points(), entries = dim * dim;
+    if (!affine)
+      return geometry.data() + std::size_t(batch) * n_q * entries * lanes;
+    // B_q = sqrt(w_q) B.
+    expanded.resize(std::size_t(n_q) * entries * lanes);
+    const double *B = geometry.data() + std::size_t(batch) * entries * lanes;
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int e = 0; e < entries * lanes; ++e)
+        expanded[q * entries * lanes + e] = std::sqrt(weights[q]) * B[e];
+    return expanded.data();
+  }
+
   void
   CurvedCells::diagonals(const unsigned int batch, double *diagonal) const
   {
-    const unsigned int n_q = n_points();
-    const auto        *B =
-      reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
-      std::size_t(batch) * n_q * dim * dim;
+    const auto *B =
+      reinterpret_cast<const curved_kernels::Lanes *>(point_geometry(batch));
     curved_kernels::Lanes *h = nullptr;
     auto         *out = reinterpret_cast<curved_kernels::Lanes *>(diagonal);
     const double *G   = reference_gradients.data();
@@ -423,8 +473,7 @@ namespace signorini
   {
     const unsigned int n_q = n_points();
     const auto        *B =
-      reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
-      std::size_t(batch) * n_q * dim * dim;
+      reinterpret_cast<const curved_kernels::Lanes *>(point_geometry(batch));
     scratch.resize(std::size_t(n_q) * n_q * dim * lanes);
     auto         *h = reinterpret_cast<curved_kernels::Lanes *>(scratch.data());
     auto         *out = reinterpret_cast<curved_kernels::Lanes *>(K);
@@ -440,14 +489,17 @@ namespace signorini
   void
   CurvedCells::apply(const unsigned int batch, const double *x, double *y) const
   {
-    const unsigned int n_q = n_points();
-    const auto        *B =
+    const auto *B =
       reinterpret_cast<const curved_kernels::Lanes *>(geometry.data()) +
-      std::size_t(batch) * n_q * dim * dim;
+      std::size_t(batch) * cell_entries();
     const auto   *in  = reinterpret_cast<const curved_kernels::Lanes *>(x);
     auto         *out = reinterpret_cast<curved_kernels::Lanes *>(y);
     const double *S = values.data(), *C = collocation.data();
-    if (dim == 2)
+    if (affine)
+      (dim == 2 ? curved_kernels::apply_parallelograms_q2 :
+                  curved_kernels::apply_parallelepipeds_q2)(
+        S, C, B, mu, lambda, in, out, weights.data());
+    else if (dim == 2)
       (degree == 1 ?
          curved_kernels::apply_quadrilaterals :
          curved_kernels::apply_quadrilaterals_q2)(S, C, B, mu, lambda, in, out);
@@ -462,15 +514,18 @@ namespace signorini
                             const float       *x,
                             float             *y) const
   {
-    using Lanes            = curved_kernels::Wide<float>;
-    const unsigned int n_q = n_points();
+    using Lanes   = curved_kernels::Wide<float>;
     const auto *B = reinterpret_cast<const Lanes *>(single_geometry.data()) +
-                    std::size_t(batch) * n_q * dim * dim;
+                    std::size_t(batch) * cell_entries();
     const auto  *in  = reinterpret_cast<const Lanes *>(x);
     auto        *out = reinterpret_cast<Lanes *>(y);
     const float *S = single_values.data(), *C = single_collocation.data();
     const float  m = mu, l = lambda;
-    if (dim == 2)
+    if (affine)
+      (dim == 2 ? curved_kernels::apply_parallelograms_q2_single :
+                  curved_kernels::apply_parallelepipeds_q2_single)(
+        S, C, B, m, l, in, out, single_weights.data());
+    else if (dim == 2)
       (degree == 1 ? curved_kernels::apply_quadrilaterals_single :
                      curved_kernels::apply_quadrilaterals_q2_single)(
         S, C, B, m, l, in, out);

@@ -41,6 +41,9 @@ namespace signorini
         matrix_free.clear();
         curved_cells.clear();
         curved_of_cell.assign(matrix_of_cell.size(), CellMatrices::none);
+        // (A Q2 quadrilateral's 18 x 18 matrix stays cheaper.)
+        if (fe_degree == 2 && dim == 3)
+          setup_affine_cells(cells);
       }
     else
       {
@@ -284,7 +287,8 @@ namespace signorini
                            wide   = single ? CurvedCells::single_lanes : lanes;
     const unsigned int        n_batches = batch_patch_offsets.size() - 1;
     AlignedVector<CellNumber> batch_x(n * wide), batch_y(n * wide);
-    const auto                apply_batch = [&](const unsigned int batch) {
+    CellNumber *const bx = batch_x.data(), *const by = batch_y.data();
+    const auto apply_batch = [&](const unsigned int batch) {
       // Batch of eight b is lanes (b % halves) * 8 on of the wide batch.
       constexpr unsigned int halves = wide / lanes;
       // Entry `position` (dof, then lane) of batch of eight `half`.
@@ -303,8 +307,9 @@ namespace signorini
             }
           const unsigned int *dofs =
             &batch_dofs[std::size_t(eight) * n * lanes];
-          for (unsigned int position = 0; position < n * lanes; ++position)
-            batch_x[slot(half, position)] = in[dofs[position]];
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int l = 0; l < lanes; ++l)
+              bx[i * wide + half * lanes + l] = in[dofs[i * lanes + l]];
           for (unsigned int p = batch_patch_offsets[eight];
                p < batch_patch_offsets[eight + 1];
                ++p)
@@ -315,9 +320,9 @@ namespace signorini
             }
         }
       if constexpr (single)
-        curved_cells.apply_single(batch, batch_x.data(), batch_y.data());
+        curved_cells.apply_single(batch, bx, by);
       else
-        curved_cells.apply(batch, batch_x.data(), batch_y.data());
+        curved_cells.apply(batch, bx, by);
       for (unsigned int half = 0; half < halves; ++half)
         {
           const unsigned int eight = batch * halves + half;
@@ -334,14 +339,20 @@ namespace signorini
             }
           const unsigned int *dofs =
             &batch_dofs[std::size_t(eight) * n * lanes];
-          for (unsigned int position = 0; position < n * lanes; ++position)
-            out[dofs[position]] += batch_y[slot(half, position)];
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int l = 0; l < lanes; ++l)
+              out[dofs[i * lanes + l]] += by[i * wide + half * lanes + l];
         }
     };
 
     CellNumber x[n], y[n];
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
-      if (direct[cell])
+      if (curved_of_cell[cell] != CellMatrices::none)
+        {
+          if (curved_of_cell[cell] % wide == 0)
+            apply_batch(curved_of_cell[cell] / wide);
+        }
+      else if (direct[cell])
         {
           // A vertex's dim dofs are consecutive: one index per vertex.
           constexpr unsigned int n_vertex = n / dim;
@@ -360,8 +371,7 @@ namespace signorini
           cell_matrices.apply(matrix_of_cell[cell], x, y);
           scatter(cell, y);
         }
-      else if (curved_of_cell[cell] % wide == 0)
-        apply_batch(curved_of_cell[cell] / wide);
+
     for (unsigned int line = 0; line < n_lines; ++line)
       if (line_forces[line] != 0.)
         for (unsigned int e = line_offsets[line]; e < line_offsets[line + 1];
@@ -645,7 +655,7 @@ namespace signorini
     // The resolved cells' n entries, in order, in resolved_dofs; their
     // first entry in cell_dofs says where.
     const auto resolved_cell = [&](const unsigned int cell) {
-      return !direct[cell] && matrix_of_cell[cell] != CellMatrices::none;
+      return !direct[cell] && curved_of_cell[cell] == CellMatrices::none;
     };
     // The curved cells' entries by batch, then dof, then lane; a
     // constrained entry (and a lane without a cell) reads entry 0 and is

@@ -151,10 +151,40 @@ namespace signorini
     return true;
   }
 
+  template <int dim>
+  void
+  ElasticLevelOperator<dim>::setup_affine_cells(
+    const std::vector<CellIterator> &cells)
+  {
+    // B = sqrt(det J) J^{-1}, J from the edges at vertex 0.
+    curved_cells.reinit(dim, 2, mu, lambda, true);
+    std::vector<double> B(dim * dim);
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        Tensor<2, dim> jacobian;
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int a = 0; a < dim; ++a)
+            jacobian[a][d] =
+              cells[c]->vertex(1u << d)[a] - cells[c]->vertex(0)[a];
+        const Tensor<2, dim> inverse = invert(jacobian);
+        const double         root = std::sqrt(std::abs(determinant(jacobian)));
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int j = 0; j < dim; ++j)
+            B[k * dim + j] = root * inverse[k][j];
+        curved_of_cell[c] = curved_cells.add(B);
+      }
+  }
+
   template std::vector<unsigned int>
   ElasticLevelOperator<2>::evaluation_positions() const;
   template std::vector<unsigned int>
   ElasticLevelOperator<3>::evaluation_positions() const;
+  template void
+  ElasticLevelOperator<2>::setup_affine_cells(
+    const std::vector<CellIterator> &);
+  template void
+  ElasticLevelOperator<3>::setup_affine_cells(
+    const std::vector<CellIterator> &);
   template bool
   ElasticLevelOperator<2>::setup_by_vertices(const Mapping<2> &,
                                              std::vector<CellIterator> &);

@@ -6,7 +6,9 @@
 // sum |K_ij x_j|, for Q1 and Q2 in 2D and 3D, with a last batch of fewer
 // than eight cells (in single precision sixteen at a time, to 1e-6); and
 // the matrices and diagonals it computes from the gradients at the points
-// (for the smoother's diagonal) equal K's to a relative 1e-13.
+// (for the smoother's diagonal) equal K's to a relative 1e-13; the same for
+// Q2 parallelograms and parallelepipeds given by one Jacobian each
+// (affine batches, a box's cells).
 // (tests/processor/ runs this on the kernels' other copies.)
 
 #include <deal.II/base/quadrature_lib.h>
@@ -16,6 +18,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <signorini/elasticity/curved_cells.h>
@@ -33,12 +36,31 @@ namespace
 {
   template <int dim>
   void
-  check(const unsigned int degree)
+  check(const unsigned int degree, const bool affine = false)
   {
     const double       mu = 0.8, lambda = 1.7;
     Triangulation<dim> mesh;
-    GridGenerator::hyper_ball(mesh);
-    mesh.refine_global(1);
+    if (affine)
+      {
+        // Parallelograms or parallelepipeds of two sizes, sheared.
+        GridGenerator::hyper_cube(mesh);
+        mesh.refine_global(1);
+        mesh.begin_active()->set_refine_flag();
+        mesh.execute_coarsening_and_refinement();
+        GridTools::transform(
+          [](const Point<dim> &p) {
+            Point<dim> q = p;
+            q[0] += 0.3 * p[1] + 0.1;
+            q[dim - 1] *= 1.7;
+            return q;
+          },
+          mesh);
+      }
+    else
+      {
+        GridGenerator::hyper_ball(mesh);
+        mesh.refine_global(1);
+      }
     const MappingQ<dim> mapping(degree);
     const FESystem<dim> fe(FE_Q<dim>(degree), dim);
     const QGauss<dim>   gauss(degree + 1);
@@ -51,7 +73,7 @@ namespace
                             update_gradients | update_JxW_values |
                               update_inverse_jacobians);
     CurvedCells   curved;
-    curved.reinit(dim, degree, mu, lambda);
+    curved.reinit(dim, degree, mu, lambda, affine);
     std::vector<std::vector<double>> matrices, xs;
     for (const auto &cell : mesh.active_cell_iterators())
       {
@@ -64,6 +86,15 @@ namespace
             for (unsigned int j = 0; j < dim; ++j)
               B[(q * dim + k) * dim + j] = std::sqrt(fe_values.JxW(q)) *
                                            fe_values.inverse_jacobian(q)[k][j];
+        // An affine cell: one B = sqrt(det J) J^{-1}, det J = JxW / w.
+        if (affine)
+          {
+            B.resize(dim * dim);
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int j = 0; j < dim; ++j)
+                B[k * dim + j] = std::sqrt(fe_values.JxW(0) / gauss.weight(0)) *
+                                 fe_values.inverse_jacobian(0)[k][j];
+          }
         curved.add(B);
         std::vector<unsigned int> local(n);
         for (unsigned int c = 0; c < dim; ++c)
@@ -173,9 +204,9 @@ namespace
               }
           }
       }
-    std::cout << dim << "D, degree " << degree << ", " << xs.size()
-              << " cells (" << (xs.size() + lanes - 1) / lanes
-              << " batches):\n";
+    std::cout << dim << "D, degree " << degree << (affine ? ", affine" : "")
+              << ", " << xs.size() << " cells ("
+              << (xs.size() + lanes - 1) / lanes << " batches):\n";
     checks::report("  max |K x - kernel| / sum |K_ij x_j|", worst, 1e-13);
     // (Its digits differ between processors: the verdict is compared.)
     checks::expect("  single precision: max |K x - kernel| / sum |K_ij x_j| "
@@ -195,4 +226,6 @@ main()
   check<2>(2);
   check<3>(1);
   check<3>(2);
+  check<2>(2, true);
+  check<3>(2, true);
 }
