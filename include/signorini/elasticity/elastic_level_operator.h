@@ -32,8 +32,10 @@ namespace signorini
    * parallelepiped (boxes), no MatrixFree is made: the cells' shape
    * matrices come from FEValues and the operator loops over its own dof
    * indices (MatrixFree::reinit() passes through about 1 kB per cell; at
-   * 1.49M dofs on two processes it set the peak). Elsewhere MatrixFree
-   * evaluates the cells without a matrix.
+   * 1.49M dofs on two processes it set the peak); at degree 2 in 3D they
+   * are applied by CurvedCells' kernel in affine batches, their matrices
+   * kept for the diagonal and the coarse level. Elsewhere MatrixFree
+   * gives the curved cells' geometry, which CurvedCells evaluates.
    *
    * Around it, what contact adds, both local to a vertex:
    * - held lines: dofs expressed by other dofs of their vertex,
