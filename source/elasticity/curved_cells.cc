@@ -159,8 +159,23 @@ namespace signorini
         }
     }
 
-    /** The scaled physical gradients h[A][q][j] = sum_k G[A][q][k] B_q[k][j]
-     * of each node A at each point q, G the reference gradients. */
+    /** h_j = sum_k G_k B_q[k][j]: a node's scaled physical gradient at a
+     * point from its reference gradient @p G there. */
+    template <int dim>
+    inline __attribute__((always_inline)) void
+    point_gradient(const double *G, const Lanes *Bq, Lanes *h)
+    {
+      for (int j = 0; j < dim; ++j)
+        {
+          Lanes sum = G[0] * Bq[j];
+          for (int k = 1; k < dim; ++k)
+            sum += G[k] * Bq[k * dim + j];
+          h[j] = sum;
+        }
+    }
+
+    /** The scaled physical gradients h[A][q][j] of each node A at each
+     * point q, G the reference gradients [A][q][k]. */
     template <int dim, int N>
     inline __attribute__((always_inline)) void
     node_gradients(const double *G, const Lanes *B, Lanes *h)
@@ -168,17 +183,9 @@ namespace signorini
       constexpr int nq = dim == 2 ? N * N : N * N * N;
       for (int A = 0; A < nq; ++A)
         for (int q = 0; q < nq; ++q)
-          {
-            const double *GAq = G + (A * nq + q) * dim;
-            const Lanes  *Bq  = B + q * dim * dim;
-            for (int j = 0; j < dim; ++j)
-              {
-                Lanes sum = GAq[0] * Bq[j];
-                for (int k = 1; k < dim; ++k)
-                  sum += GAq[k] * Bq[k * dim + j];
-                h[(A * nq + q) * dim + j] = sum;
-              }
-          }
+          point_gradient<dim>(G + (A * nq + q) * dim,
+                              B + q * dim * dim,
+                              h + (A * nq + q) * dim);
     }
 
     /** The diagonal of a batch's K: entry (c, A) is sum_q mu (|h_A|^2 +
@@ -198,15 +205,10 @@ namespace signorini
           Lanes square[dim] = {};
           for (int q = 0; q < nq; ++q)
             {
-              const double *GAq = G + (A * nq + q) * dim;
-              const Lanes  *Bq  = B + q * dim * dim;
+              Lanes h[dim];
+              point_gradient<dim>(G + (A * nq + q) * dim, B + q * dim * dim, h);
               for (int j = 0; j < dim; ++j)
-                {
-                  Lanes value = GAq[0] * Bq[j];
-                  for (int k = 1; k < dim; ++k)
-                    value += GAq[k] * Bq[k * dim + j];
-                  square[j] += value * value;
-                }
+                square[j] += h[j] * h[j];
             }
           Lanes norm = square[0];
           for (int j = 1; j < dim; ++j)
@@ -260,44 +262,32 @@ namespace signorini
 
     // One plain function per case, which target_clones copies per
     // instruction set.
-#define SIGNORINI_CURVED_KERNEL(name, dim, N, Number)         \
-  SIGNORINI_WIDE_KERNEL void name(const Number       *S,      \
-                                  const Number       *C,      \
-                                  const Wide<Number> *B,      \
-                                  const Number        mu,     \
-                                  const Number        lambda, \
-                                  const Wide<Number> *x,      \
-                                  Wide<Number>       *y)      \
-  {                                                           \
-    apply_batch<dim, N, Number>(S, C, B, mu, lambda, x, y);   \
+    // (Affine: Q2 cells that are parallelepipeds, one B a cell.)
+#define SIGNORINI_CURVED_KERNEL(name, dim, N, Number, affine)                \
+  SIGNORINI_WIDE_KERNEL void name(const Number       *S,                     \
+                                  const Number       *C,                     \
+                                  const Wide<Number> *B,                     \
+                                  const Number        mu,                    \
+                                  const Number        lambda,                \
+                                  const Wide<Number> *x,                     \
+                                  Wide<Number>       *y,                     \
+                                  const Number       *weights)               \
+  {                                                                          \
+    apply_batch<dim, N, Number, affine>(S, C, B, mu, lambda, x, y, weights); \
   }
-    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals, 2, 2, double)
-    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2, 2, 3, double)
-    SIGNORINI_CURVED_KERNEL(apply_hexahedra, 3, 2, double)
-    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2, 3, 3, double)
-    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_single, 2, 2, float)
-    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2_single, 2, 3, float)
-    SIGNORINI_CURVED_KERNEL(apply_hexahedra_single, 3, 2, float)
-    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2_single, 3, 3, float)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals, 2, 2, double, false)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2, 2, 3, double, false)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra, 3, 2, double, false)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2, 3, 3, double, false)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_single, 2, 2, float, false)
+    SIGNORINI_CURVED_KERNEL(apply_quadrilaterals_q2_single, 2, 3, float, false)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra_single, 3, 2, float, false)
+    SIGNORINI_CURVED_KERNEL(apply_hexahedra_q2_single, 3, 3, float, false)
+    SIGNORINI_CURVED_KERNEL(apply_parallelograms_q2, 2, 3, double, true)
+    SIGNORINI_CURVED_KERNEL(apply_parallelepipeds_q2, 3, 3, double, true)
+    SIGNORINI_CURVED_KERNEL(apply_parallelograms_q2_single, 2, 3, float, true)
+    SIGNORINI_CURVED_KERNEL(apply_parallelepipeds_q2_single, 3, 3, float, true)
 #undef SIGNORINI_CURVED_KERNEL
-    // Q2 cells that are parallelepipeds: one B a cell.
-#define SIGNORINI_AFFINE_KERNEL(name, dim, N, Number)                      \
-  SIGNORINI_WIDE_KERNEL void name(const Number       *S,                   \
-                                  const Number       *C,                   \
-                                  const Wide<Number> *B,                   \
-                                  const Number        mu,                  \
-                                  const Number        lambda,              \
-                                  const Wide<Number> *x,                   \
-                                  Wide<Number>       *y,                   \
-                                  const Number       *weights)             \
-  {                                                                        \
-    apply_batch<dim, N, Number, true>(S, C, B, mu, lambda, x, y, weights); \
-  }
-    SIGNORINI_AFFINE_KERNEL(apply_parallelograms_q2, 2, 3, double)
-    SIGNORINI_AFFINE_KERNEL(apply_parallelepipeds_q2, 3, 3, double)
-    SIGNORINI_AFFINE_KERNEL(apply_parallelograms_q2_single, 2, 3, float)
-    SIGNORINI_AFFINE_KERNEL(apply_parallelepipeds_q2_single, 3, 3, float)
-#undef SIGNORINI_AFFINE_KERNEL
 #define SIGNORINI_CURVED_SETUP(name, batch_function, dim, N) \
   SIGNORINI_WIDE_KERNEL void name(const double *G,           \
                                   const Lanes  *B,           \
@@ -455,35 +445,43 @@ namespace signorini
   void
   CurvedCells::diagonals(const unsigned int batch, double *diagonal) const
   {
-    const auto *B =
-      reinterpret_cast<const curved_kernels::Lanes *>(point_geometry(batch));
-    curved_kernels::Lanes *h = nullptr;
-    auto         *out = reinterpret_cast<curved_kernels::Lanes *>(diagonal);
-    const double *G   = reference_gradients.data();
-    if (dim == 2)
-      (degree == 1 ? curved_kernels::diagonal_2d_q1 :
-                     curved_kernels::diagonal_2d_q2)(G, B, mu, lambda, h, out);
-    else
-      (degree == 1 ? curved_kernels::diagonal_3d_q1 :
-                     curved_kernels::diagonal_3d_q2)(G, B, mu, lambda, h, out);
+    from_gradients(batch, false, diagonal);
   }
 
   void
   CurvedCells::matrices(const unsigned int batch, double *K) const
   {
+    from_gradients(batch, true, K);
+  }
+
+  void
+  CurvedCells::from_gradients(const unsigned int batch,
+                              const bool         whole,
+                              double            *out) const
+  {
+    using curved_kernels::Lanes;
     const unsigned int n_q = n_points();
-    const auto        *B =
-      reinterpret_cast<const curved_kernels::Lanes *>(point_geometry(batch));
-    scratch.resize(std::size_t(n_q) * n_q * dim * lanes);
-    auto         *h = reinterpret_cast<curved_kernels::Lanes *>(scratch.data());
-    auto         *out = reinterpret_cast<curved_kernels::Lanes *>(K);
-    const double *G   = reference_gradients.data();
-    if (dim == 2)
-      (degree == 1 ? curved_kernels::matrix_2d_q1 :
-                     curved_kernels::matrix_2d_q2)(G, B, mu, lambda, h, out);
-    else
-      (degree == 1 ? curved_kernels::matrix_3d_q1 :
-                     curved_kernels::matrix_3d_q2)(G, B, mu, lambda, h, out);
+    const auto *B = reinterpret_cast<const Lanes *>(point_geometry(batch));
+    Lanes      *h = nullptr;
+    if (whole)
+      {
+        scratch.resize(std::size_t(n_q) * n_q * dim * lanes);
+        h = reinterpret_cast<Lanes *>(scratch.data());
+      }
+    using Function =
+      void (*)(const double *, const Lanes *, double, double, Lanes *, Lanes *);
+    // [whole][dim - 2][degree - 1]
+    const Function functions[2][2][2] = {
+      {{curved_kernels::diagonal_2d_q1, curved_kernels::diagonal_2d_q2},
+       {curved_kernels::diagonal_3d_q1, curved_kernels::diagonal_3d_q2}},
+      {{curved_kernels::matrix_2d_q1, curved_kernels::matrix_2d_q2},
+       {curved_kernels::matrix_3d_q1, curved_kernels::matrix_3d_q2}}};
+    functions[whole][dim - 2][degree - 1](reference_gradients.data(),
+                                          B,
+                                          mu,
+                                          lambda,
+                                          h,
+                                          reinterpret_cast<Lanes *>(out));
   }
 
   void
@@ -500,13 +498,13 @@ namespace signorini
                   curved_kernels::apply_parallelepipeds_q2)(
         S, C, B, mu, lambda, in, out, weights.data());
     else if (dim == 2)
-      (degree == 1 ?
-         curved_kernels::apply_quadrilaterals :
-         curved_kernels::apply_quadrilaterals_q2)(S, C, B, mu, lambda, in, out);
+      (degree == 1 ? curved_kernels::apply_quadrilaterals :
+                     curved_kernels::apply_quadrilaterals_q2)(
+        S, C, B, mu, lambda, in, out, weights.data());
     else
-      (degree == 1 ?
-         curved_kernels::apply_hexahedra :
-         curved_kernels::apply_hexahedra_q2)(S, C, B, mu, lambda, in, out);
+      (degree == 1 ? curved_kernels::apply_hexahedra :
+                     curved_kernels::apply_hexahedra_q2)(
+        S, C, B, mu, lambda, in, out, weights.data());
   }
 
   void
@@ -528,11 +526,11 @@ namespace signorini
     else if (dim == 2)
       (degree == 1 ? curved_kernels::apply_quadrilaterals_single :
                      curved_kernels::apply_quadrilaterals_q2_single)(
-        S, C, B, m, l, in, out);
+        S, C, B, m, l, in, out, single_weights.data());
     else
-      (degree == 1 ?
-         curved_kernels::apply_hexahedra_single :
-         curved_kernels::apply_hexahedra_q2_single)(S, C, B, m, l, in, out);
+      (degree == 1 ? curved_kernels::apply_hexahedra_single :
+                     curved_kernels::apply_hexahedra_q2_single)(
+        S, C, B, m, l, in, out, single_weights.data());
   }
 
 } // namespace signorini

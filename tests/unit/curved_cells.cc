@@ -24,6 +24,7 @@
 #include <signorini/elasticity/curved_cells.h>
 
 #include "checks.h"
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -119,63 +120,51 @@ namespace
           x[a] = std::sin(1.7 * a + 0.3 * xs.size()) * (1. + a % 3);
         xs.push_back(x);
       }
-    const unsigned int    lanes = CurvedCells::lanes;
-    AlignedVector<double> bx(n * lanes), by(n * lanes);
-    double                worst = 0.;
-    for (unsigned int batch = 0; batch * lanes < xs.size(); ++batch)
-      {
-        bx.fill(0.);
-        for (unsigned int l = 0; l < lanes && batch * lanes + l < xs.size();
-             ++l)
-          for (unsigned int a = 0; a < n; ++a)
-            bx[a * lanes + l] = xs[batch * lanes + l][a];
-        curved.apply(batch, bx.data(), by.data());
-        for (unsigned int l = 0; l < lanes && batch * lanes + l < xs.size();
-             ++l)
-          {
-            const auto &K = matrices[batch * lanes + l];
-            const auto &x = xs[batch * lanes + l];
+    // The largest |K x - kernel| / sum |K_ij x_j| with `wide` cells a
+    // batch, in Number.
+    const auto worst_of = [&](const unsigned int wide,
+                              auto               number,
+                              const auto        &apply) {
+      using Number = decltype(number);
+      AlignedVector<Number> bx(n * wide), by(n * wide);
+      double                worst = 0.;
+      for (unsigned int batch = 0; batch * wide < xs.size(); ++batch)
+        {
+          const unsigned int first = batch * wide,
+                             count =
+                               std::min<std::size_t>(wide, xs.size() - first);
+          bx.fill(Number());
+          for (unsigned int l = 0; l < count; ++l)
+            for (unsigned int a = 0; a < n; ++a)
+              bx[a * wide + l] = xs[first + l][a];
+          apply(batch, bx.data(), by.data());
+          for (unsigned int l = 0; l < count; ++l)
             for (unsigned int a = 0; a < n; ++a)
               {
-                double y = 0., scale = 0.;
+                const auto &K = matrices[first + l];
+                double      y = 0., scale = 0.;
                 for (unsigned int b = 0; b < n; ++b)
                   {
-                    y += K[a * n + b] * x[b];
-                    scale += std::abs(K[a * n + b] * x[b]);
+                    y += K[a * n + b] * xs[first + l][b];
+                    scale += std::abs(K[a * n + b] * xs[first + l][b]);
                   }
-                worst =
-                  std::max(worst, std::abs(by[a * lanes + l] - y) / scale);
+                worst = std::max(worst, std::abs(by[a * wide + l] - y) / scale);
               }
-          }
-      }
+        }
+      return worst;
+    };
+    const unsigned int lanes = CurvedCells::lanes;
+    const double       worst =
+      worst_of(lanes, 0., [&](const auto batch, const auto x, const auto y) {
+        curved.apply(batch, x, y);
+      });
     // In single precision, sixteen cells at a time.
-    const unsigned int   wide = CurvedCells::single_lanes;
-    AlignedVector<float> sx(n * wide), sy(n * wide);
-    double               worst_single = 0.;
-    for (unsigned int batch = 0; batch * wide < xs.size(); ++batch)
-      {
-        sx.fill(0.f);
-        for (unsigned int l = 0; l < wide && batch * wide + l < xs.size(); ++l)
-          for (unsigned int a = 0; a < n; ++a)
-            sx[a * wide + l] = xs[batch * wide + l][a];
-        curved.apply_single(batch, sx.data(), sy.data());
-        for (unsigned int l = 0; l < wide && batch * wide + l < xs.size(); ++l)
-          {
-            const auto &K = matrices[batch * wide + l];
-            const auto &x = xs[batch * wide + l];
-            for (unsigned int a = 0; a < n; ++a)
-              {
-                double y = 0., scale = 0.;
-                for (unsigned int b = 0; b < n; ++b)
-                  {
-                    y += K[a * n + b] * x[b];
-                    scale += std::abs(K[a * n + b] * x[b]);
-                  }
-                worst_single = std::max(worst_single,
-                                        std::abs(sy[a * wide + l] - y) / scale);
-              }
-          }
-      }
+    const double worst_single =
+      worst_of(CurvedCells::single_lanes,
+               0.f,
+               [&](const auto batch, const auto x, const auto y) {
+                 curved.apply_single(batch, x, y);
+               });
     // The matrices and diagonals from the points' gradients.
     AlignedVector<double> bK(n * n * lanes), bd(n * lanes);
     double                worst_matrix = 0., worst_diagonal = 0.;

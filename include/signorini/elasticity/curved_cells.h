@@ -100,6 +100,12 @@ namespace signorini
     unsigned int
     n_points() const;
 
+    /** diagonals(), or with @p whole matrices(). */
+    void
+    from_gradients(const unsigned int batch,
+                   const bool         whole,
+                   double            *out) const;
+
     /** The geometry's numbers per cell and lane. */
     unsigned int
     cell_entries() const;
