@@ -289,7 +289,8 @@ namespace signorini
     AlignedVector<CellNumber> batch_x(n * wide), batch_y(n * wide);
     CellNumber *const bx = batch_x.data(), *const by = batch_y.data();
     const auto apply_batch = [&](const unsigned int batch) {
-      // Batch of eight b is lanes (b % halves) * 8 on of the wide batch.
+      // The wide batch's lanes half * 8 on are batch of eight
+      // batch * halves + half.
       constexpr unsigned int halves = wide / lanes;
       // Entry `position` (dof, then lane) of batch of eight `half`.
       const auto slot = [&](const unsigned int half,
@@ -302,7 +303,7 @@ namespace signorini
           if (eight >= n_batches)
             {
               for (unsigned int position = 0; position < n * lanes; ++position)
-                batch_x[slot(half, position)] = 0.;
+                bx[slot(half, position)] = 0.;
               continue;
             }
           const unsigned int *dofs =
@@ -315,7 +316,7 @@ namespace signorini
                ++p)
             {
               const auto [position, line] = batch_patches[p];
-              batch_x[slot(half, position)] =
+              bx[slot(half, position)] =
                 line == CellMatrices::none ? 0. : line_values[line];
             }
         }
@@ -334,8 +335,8 @@ namespace signorini
             {
               const auto [position, line] = batch_patches[p];
               if (line != CellMatrices::none)
-                line_forces[line] += batch_y[slot(half, position)];
-              batch_y[slot(half, position)] = 0.;
+                line_forces[line] += by[slot(half, position)];
+              by[slot(half, position)] = 0.;
             }
           const unsigned int *dofs =
             &batch_dofs[std::size_t(eight) * n * lanes];
