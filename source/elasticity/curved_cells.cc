@@ -383,7 +383,8 @@ namespace signorini
   void
   CurvedCells::clear()
   {
-    n = 0;
+    n      = 0;
+    affine = false;
     geometry.clear();
     single_geometry.clear();
   }

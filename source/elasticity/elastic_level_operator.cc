@@ -233,10 +233,8 @@ namespace signorini
   template <int dim>
   template <int degree, bool as_given, typename CellNumber>
   void
-  ElasticLevelOperator<dim>::apply_cells(
-    VectorType                                  &dst,
-    const VectorType                            &src,
-    const std::pair<unsigned int, unsigned int> &cells) const
+  ElasticLevelOperator<dim>::apply_cells(VectorType       &dst,
+                                         const VectorType &src) const
   {
     constexpr unsigned int n = dim * Utilities::pow(degree + 1, dim);
     // The values by local index, owned and ghost ones (raw: a store through
@@ -347,7 +345,7 @@ namespace signorini
     };
 
     CellNumber x[n], y[n];
-    for (unsigned int cell = cells.first; cell < cells.second; ++cell)
+    for (unsigned int cell = 0; cell < matrix_of_cell.size(); ++cell)
       if (curved_of_cell[cell] != CellMatrices::none)
         {
           if (curved_of_cell[cell] % wide == 0)
@@ -394,8 +392,7 @@ namespace signorini
       src.update_ghost_values();
     dst = 0.;
     with_degree([&](const auto degree) {
-      apply_cells<decltype(degree)::value, as_given, CellNumber>(
-        dst, src, {0, matrix_of_cell.size()});
+      apply_cells<decltype(degree)::value, as_given, CellNumber>(dst, src);
     });
     dst.compress(VectorOperation::add);
     if (!had_ghosts)

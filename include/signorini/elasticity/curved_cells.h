@@ -59,6 +59,7 @@ namespace signorini
            const double       lambda,
            const bool         affine = false);
 
+    /** Forgets the cells, their geometry and the affine mode. */
     void
     clear();
 

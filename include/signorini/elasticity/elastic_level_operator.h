@@ -115,9 +115,9 @@ namespace signorini
     void
     vmult_newton(VectorType &dst, const VectorType &src) const;
 
-    /** vmult() with the cells' shape matrices applied in single precision
-     * (the vectors, the constraints and the cells without a shape matrix
-     * in double): about 1e-7 relative, twice the entries per register, for
+    /** vmult() with the cells applied in single precision, by their shape
+     * matrices or by the kernel (the vectors and the constraints in
+     * double): about 1e-7 relative, twice the entries per register, for
      * the multigrid's smoothing and residuals. */
     void
     vmult_single(VectorType &dst, const VectorType &src) const;
@@ -241,15 +241,13 @@ namespace signorini
     std::vector<unsigned int>
     evaluation_positions() const;
 
-    /** dst += K src on @p cells: the `direct` cells by their matrix, the
-     * `resolved` ones by their matrix or as curved cells (a batch at a
-     * time) and by their constraint lines (unless @p as_given); the shape
-     * matrices applied in CellNumber, the curved cells in double. */
+    /** dst += K src over all cells: the `direct` cells by their matrix,
+     * the `resolved` ones by their matrix or by the kernel (a batch at a
+     * time, when its first lane's cell comes) and by their constraint lines
+     * (unless @p as_given); cells and batches applied in CellNumber. */
     template <int degree, bool as_given, typename CellNumber>
     void
-    apply_cells(VectorType                                  &dst,
-                const VectorType                            &src,
-                const std::pair<unsigned int, unsigned int> &cells) const;
+    apply_cells(VectorType &dst, const VectorType &src) const;
 
     /** dst = K src (or as given) over all cells: src's ghosts imported for
      * the loop, dst's added to their owners. */
